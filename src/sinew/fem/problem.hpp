@@ -1,0 +1,42 @@
+#pragma once
+/// @file problem.hpp
+/// The discretized problem as plain data: all bodies' meshes concatenated into one node and
+/// tet numbering, a material per region, constraints and loads resolved to node indices.
+/// Built by the scene module; consumed by the energies and the solver. It owns nothing that
+/// changes during a solve (state lives in solver::State).
+
+#include <string>
+#include <vector>
+
+#include "sinew/fem/constraints_config.hpp"
+#include "sinew/material/material.hpp"
+#include "sinew/mesh/tet_mesh.hpp"
+
+namespace sinew::fem {
+
+/// Where one body lives in the global numbering: nodes [first_node, first_node + num_nodes),
+/// tets [first_tet, first_tet + num_tets).
+struct BodyRange {
+  std::string name;
+  Index first_node = 0, num_nodes = 0;
+  Index first_tet = 0, num_tets = 0;
+};
+
+struct Problem {
+  /// All bodies, concatenated. Region names are "<body>/<region>"; node and face sets are
+  /// "<body>/<set>".
+  mesh::TetMesh mesh;
+  std::vector<BodyRange> bodies;
+  /// Per region: the law (nullptr for rigid regions, which carry no elastic energy).
+  std::vector<material::MaterialPtr> region_material;
+  /// Per region: mass density (mass per rest volume), 0 allowed.
+  std::vector<double> region_density;
+
+  std::vector<RigidBody> rigid_bodies;
+  std::vector<PrescribedNodes> prescribed;
+  std::vector<PlanarNodes> planar;
+  std::vector<NodalForce> forces;
+  Vector3 gravity = Vector3::Zero();  ///< acceleration (length / time^2)
+};
+
+}  // namespace sinew::fem

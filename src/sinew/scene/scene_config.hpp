@@ -1,0 +1,97 @@
+#pragma once
+/// @file scene_config.hpp
+/// A scene as plain config structs, the result of parsing and validating a JSON scene
+/// (see docs/scene-reference.md, generated from the schema in scene_schema.cpp).
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sinew/fem/constraints_config.hpp"
+#include "sinew/material/material_spec.hpp"
+#include "sinew/mesh/generate.hpp"
+#include "sinew/solver/solver_config.hpp"
+
+namespace sinew::scene {
+
+/// A body's mesh: a Gmsh file or generated parts, then an optional rigid placement.
+struct MeshSourceConfig {
+  std::string file;                 ///< absolute, or resolved against the scene's directory
+  std::vector<mesh::Part> parts;    ///< when file is empty
+  mesh::GenerateOptions generate;
+  Vector3 translate = Vector3::Zero();  ///< applied after rotate
+  Vector3 rotate_axis = Vector3::UnitZ();
+  double rotate_angle = 0;              ///< radians, about rotate_axis through the origin
+};
+
+/// What a region of a body is made of.
+struct RegionConfig {
+  std::string material;   ///< key into SceneConfig::materials; empty when rigid
+  bool rigid = false;
+  fem::RigidBody::Kind rigid_kind = fem::RigidBody::Kind::Fixed;
+  fem::RigidMotion rigid_motion;          ///< when rigid_kind == Prescribed
+  double density = 0;                      ///< mass per volume
+  std::optional<Vector3> fiber_direction;  ///< overrides the material's fiber direction
+};
+
+struct BodyConfig {
+  std::string name;
+  MeshSourceConfig mesh;
+  /// Region name -> config. A mesh region without an entry uses the entry named "*" if any.
+  std::map<std::string, RegionConfig> regions;
+};
+
+/// Chooses nodes of one body.
+struct NodeSelector {
+  enum class Kind { Set, Region, Box, Plane, All };
+  Kind kind = Kind::All;
+  std::string body;   ///< body name (may be omitted in JSON when the scene has one body)
+  std::string name;   ///< Set: node/face set name; Region: region name
+  Vector3 box_min = Vector3::Zero(), box_max = Vector3::Zero();  ///< Box, inclusive
+  Vector3 point = Vector3::Zero(), normal = Vector3::UnitZ();    ///< Plane
+  double tolerance = 1e-9;  ///< Plane: |n.(X-p)| <= tolerance; Box: padding (length)
+};
+
+struct BoundaryConditionConfig {
+  enum class Kind { Fixed, Prescribed, Planar };
+  std::string name;
+  Kind kind = Kind::Fixed;
+  NodeSelector nodes;
+  fem::RigidMotion motion;            ///< Prescribed
+  Vector3 normal = Vector3::UnitZ();   ///< Planar
+  double displacement = 0;            ///< Planar: final normal displacement
+  fem::Amplitude amplitude;           ///< Planar
+};
+
+struct ForceConfig {
+  std::string name;
+  NodeSelector nodes;
+  Vector3 total_force = Vector3::Zero();
+  fem::Amplitude amplitude;
+};
+
+struct LoadsConfig {
+  Vector3 gravity = Vector3::Zero();
+  std::vector<ForceConfig> forces;
+};
+
+struct OutputConfig {
+  bool vtu = true;        ///< write a .vtu per output step and a .pvd series
+  int every = 1;          ///< write every n-th increment (the last one always)
+};
+
+struct SceneConfig {
+  std::string name;
+  std::string description;
+  std::string units;            ///< free text, e.g. "mm, N, MPa, s" (documentation only)
+  std::string base_directory;   ///< directory of the scene file (relative paths resolve here)
+  std::map<std::string, material::MaterialSpec> materials;
+  std::vector<BodyConfig> bodies;
+  std::vector<BoundaryConditionConfig> boundary_conditions;
+  LoadsConfig loads;
+  solver::StaticSolverOptions solver;
+  OutputConfig output;
+};
+
+}  // namespace sinew::scene
