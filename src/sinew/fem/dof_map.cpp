@@ -1,0 +1,366 @@
+#include "sinew/fem/dof_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/SVD>
+#include <fmt/format.h>
+
+#include "sinew/core/error.hpp"
+
+namespace sinew::fem {
+namespace {
+
+Matrix3 cross_matrix(const Vector3& v) {
+  Matrix3 M;
+  M << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return M;
+}
+
+Matrix3 rotation_from_vector(const Vector3& w) {
+  const double angle = w.norm();
+  if (angle == 0) return Matrix3::Identity();
+  return Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
+}
+
+Vector3 rotation_to_vector(const Matrix3& R) {
+  const Eigen::AngleAxisd aa(R);
+  return aa.angle() * aa.axis();
+}
+
+}  // namespace
+
+DofMap::DofMap(const Problem& problem) : problem_(problem) {
+  const Index n = problem.mesh.num_nodes();
+  node_.assign(static_cast<std::size_t>(n), NodeInfo{});
+
+  // Rigid bodies claim the nodes of their tets.
+  rigid_.resize(problem.rigid_bodies.size());
+  for (std::size_t r = 0; r < problem.rigid_bodies.size(); ++r) {
+    const RigidBody& body = problem.rigid_bodies[r];
+    RigidInfo& info = rigid_[r];
+    info.kind = body.kind;
+    info.motion = body.motion;
+    std::vector<Index> members;
+    for (Index t : body.tets)
+      for (int i = 0; i < 4; ++i) members.push_back(problem.mesh.tets(t, i));
+    std::sort(members.begin(), members.end());
+    members.erase(std::unique(members.begin(), members.end()), members.end());
+    for (Index a : members) {
+      NodeInfo& node = node_[a];
+      if (node.kind == NodeKind::RigidMember)
+        throw InputError(fmt::format("node {} belongs to two rigid bodies, \"{}\" and \"{}\"; a node can follow "
+                                     "only one rigid body",
+                                     a, problem.rigid_bodies[node.owner].name, body.name));
+      node.kind = NodeKind::RigidMember;
+      node.owner = static_cast<Index>(r);
+      node.ndof = 0;
+      info.center += problem.mesh.rest.row(a).transpose();
+    }
+    if (members.empty()) throw InputError(fmt::format("rigid body \"{}\" has no nodes", body.name));
+    info.center /= static_cast<double>(members.size());
+    info.members = std::move(members);
+  }
+
+  for (std::size_t s = 0; s < problem.prescribed.size(); ++s) {
+    const PrescribedNodes& set = problem.prescribed[s];
+    for (Index a : set.nodes) {
+      NodeInfo& node = node_[a];
+      if (node.kind == NodeKind::RigidMember)
+        throw InputError(fmt::format("boundary condition \"{}\" prescribes node {}, which belongs to rigid body "
+                                     "\"{}\"; prescribe the rigid body's motion instead",
+                                     set.name, a, problem.rigid_bodies[node.owner].name));
+      if (node.kind == NodeKind::Prescribed && node.owner != static_cast<Index>(s))
+        throw InputError(fmt::format("node {} is prescribed by both \"{}\" and \"{}\"", a,
+                                     problem.prescribed[node.owner].name, set.name));
+      node.kind = NodeKind::Prescribed;
+      node.owner = static_cast<Index>(s);
+      node.ndof = 0;
+    }
+  }
+
+  for (std::size_t p = 0; p < problem.planar.size(); ++p) {
+    const PlanarNodes& set = problem.planar[p];
+    if (!(set.normal.norm() > 0)) throw InputError(fmt::format("planar constraint \"{}\" has a zero normal", set.name));
+    for (Index a : set.nodes) {
+      NodeInfo& node = node_[a];
+      if (node.kind == NodeKind::RigidMember)
+        throw InputError(fmt::format("planar constraint \"{}\" holds node {}, which belongs to rigid body \"{}\"",
+                                     set.name, a, problem.rigid_bodies[node.owner].name));
+      if (node.kind == NodeKind::Prescribed) continue;  // fully prescribed wins
+      node.kind = NodeKind::Planar;
+      node.planes.push_back(static_cast<Index>(p));
+    }
+  }
+
+  // Planar bases: orthonormal complement of the constraint normals.
+  for (Index a = 0; a < n; ++a) {
+    NodeInfo& node = node_[a];
+    if (node.kind != NodeKind::Planar) continue;
+    const int k = static_cast<int>(node.planes.size());
+    Eigen::Matrix<double, Eigen::Dynamic, 3> N(k, 3);
+    for (int i = 0; i < k; ++i) N.row(i) = problem.planar[node.planes[i]].normal.normalized().transpose();
+    Eigen::JacobiSVD<Eigen::Matrix<double, Eigen::Dynamic, 3>> svd(N, Eigen::ComputeFullV);
+    const auto& sv = svd.singularValues();
+    int rank = 0;
+    for (int i = 0; i < sv.size(); ++i)
+      if (sv[i] > 1e-8) ++rank;
+    if (rank < k)
+      throw InputError(fmt::format("node {} is held by parallel planar constraints (\"{}\" and others); use one "
+                                   "planar constraint per direction",
+                                   a, problem.planar[node.planes[0]].name));
+    node.ndof = 3 - rank;
+    const Matrix3 V = svd.matrixV();
+    node.basis.setZero();
+    for (int j = 0; j < node.ndof; ++j) node.basis.col(j) = V.col(rank + j);
+    if (node.ndof == 0) node.kind = NodeKind::Prescribed, node.owner = -1;
+  }
+
+  // Number the DOFs: nodes in order, then free rigid bodies.
+  Index next = 0;
+  for (Index a = 0; a < n; ++a) {
+    NodeInfo& node = node_[a];
+    if (node.kind == NodeKind::Free || node.kind == NodeKind::Planar) {
+      node.dof = next;
+      next += node.ndof;
+    }
+  }
+  for (std::size_t r = 0; r < rigid_.size(); ++r) {
+    if (rigid_[r].kind != RigidBody::Kind::Free) continue;
+    rigid_[r].dof = next;
+    next += 6;
+    for (Index a : rigid_[r].members) {
+      node_[a].dof = rigid_[r].dof;
+      node_[a].ndof = 6;
+    }
+  }
+  num_dofs_ = next;
+}
+
+Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6> DofMap::node_jacobian(const State& state, Index a) const {
+  const NodeInfo& node = node_[a];
+  Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6> J(3, node.ndof);
+  if (node.kind == NodeKind::RigidMember) {
+    if (node.ndof == 0) return J;
+    const std::size_t r = static_cast<std::size_t>(node.owner);
+    const Vector3 arm = state.x.row(a).transpose() - (rigid_[r].center + state.rigid[r].t);
+    J.leftCols<3>().setIdentity();
+    J.rightCols<3>() = -cross_matrix(arm);  // d(w x arm)/dw = -[arm]x
+  } else {
+    for (int j = 0; j < node.ndof; ++j) J.col(j) = node.basis.col(j);
+  }
+  return J;
+}
+
+void DofMap::place_rigid_members(State& state, std::size_t r) const {
+  const RigidInfo& info = rigid_[r];
+  const RigidPose& pose = state.rigid[r];
+  for (Index a : info.members)
+    state.x.row(a) =
+        (pose.R * (problem_.mesh.rest.row(a).transpose() - info.center) + info.center + pose.t).transpose();
+}
+
+State DofMap::initial_state(double lambda) const {
+  State state;
+  state.x = problem_.mesh.rest;
+  state.rigid.assign(rigid_.size(), RigidPose{});
+  sync(state, lambda);
+  return state;
+}
+
+void DofMap::sync(State& state, double lambda) const {
+  state.lambda = lambda;
+  const Positions& X = problem_.mesh.rest;
+  for (const PrescribedNodes& set : problem_.prescribed) {
+    const Matrix3 R = set.motion.rotation(lambda);
+    const Vector3 t = set.motion.offset(lambda);
+    for (Index a : set.nodes) state.x.row(a) = (R * X.row(a).transpose() + t).transpose();
+  }
+  for (std::size_t r = 0; r < rigid_.size(); ++r) {
+    const RigidInfo& info = rigid_[r];
+    if (info.kind != RigidBody::Kind::Free) {
+      const Matrix3 R = info.kind == RigidBody::Kind::Fixed ? Matrix3::Identity() : info.motion.rotation(lambda);
+      const Vector3 offset = info.kind == RigidBody::Kind::Fixed ? Vector3::Zero() : info.motion.offset(lambda);
+      state.rigid[r].R = R;
+      state.rigid[r].t = R * info.center + offset - info.center;
+    }
+    place_rigid_members(state, r);
+  }
+  // Planar nodes: minimal-norm correction onto the intersection of their planes.
+  for (Index a = 0; a < static_cast<Index>(node_.size()); ++a) {
+    const NodeInfo& node = node_[a];
+    if (node.planes.empty() || (node.kind != NodeKind::Planar && node.kind != NodeKind::Prescribed)) continue;
+    if (node.kind == NodeKind::Prescribed && node.owner >= 0) continue;  // set by a prescribed set
+    const int k = static_cast<int>(node.planes.size());
+    Eigen::Matrix<double, Eigen::Dynamic, 3> N(k, 3);
+    VectorX residual(k);
+    const Vector3 u = (state.x.row(a) - X.row(a)).transpose();
+    for (int i = 0; i < k; ++i) {
+      const PlanarNodes& plane = problem_.planar[node.planes[i]];
+      const Vector3 nrm = plane.normal.normalized();
+      N.row(i) = nrm.transpose();
+      residual[i] = plane.displacement * plane.amplitude(lambda) - nrm.dot(u);
+    }
+    const Vector3 correction = N.transpose() * (N * N.transpose()).ldlt().solve(residual);
+    state.x.row(a) += correction.transpose();
+  }
+}
+
+VectorX DofMap::reduce_gradient(const State& state, const NodalVectors& g) const {
+  VectorX gq = VectorX::Zero(num_dofs_);
+  for (Index a = 0; a < static_cast<Index>(node_.size()); ++a) {
+    const NodeInfo& node = node_[a];
+    if (node.ndof == 0) continue;
+    gq.segment(node.dof, node.ndof) += node_jacobian(state, a).transpose() * g.row(a).transpose();
+  }
+  return gq;
+}
+
+void DofMap::bind_pattern(const BlockSparseMatrix& H) {
+  const auto& offsets = H.row_offsets();
+  const auto& cols = H.columns();
+  std::vector<Eigen::Triplet<double, int>> entries;
+  entries.reserve(static_cast<std::size_t>(H.num_blocks()) * 9 + static_cast<std::size_t>(num_dofs_));
+  for (Index i = 0; i < num_dofs_; ++i) entries.emplace_back(i, i, 0.0);
+  for (Index a = 0; a < H.num_nodes(); ++a) {
+    const NodeInfo& na = node_[a];
+    if (na.ndof == 0) continue;
+    for (Index k = offsets[a]; k < offsets[a + 1]; ++k) {
+      const NodeInfo& nb = node_[cols[k]];
+      for (int i = 0; i < na.ndof; ++i)
+        for (int j = 0; j < nb.ndof; ++j) entries.emplace_back(na.dof + i, nb.dof + j, 0.0);
+    }
+  }
+  pattern_.resize(num_dofs_, num_dofs_);
+  pattern_.setFromTriplets(entries.begin(), entries.end());  // duplicates summed: pattern only
+  pattern_.makeCompressed();
+
+  auto value_index = [&](Index row, Index col) -> Index {
+    const int* begin = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col];
+    const int* end = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col + 1];
+    const int* it = std::lower_bound(begin, end, row);
+    return static_cast<Index>(it - pattern_.innerIndexPtr());
+  };
+  block_target_offset_.assign(static_cast<std::size_t>(H.num_blocks()) + 1, 0);
+  targets_.clear();
+  for (Index a = 0; a < H.num_nodes(); ++a) {
+    const NodeInfo& na = node_[a];
+    for (Index k = offsets[a]; k < offsets[a + 1]; ++k) {
+      const NodeInfo& nb = node_[cols[k]];
+      if (na.ndof > 0 && nb.ndof > 0)
+        for (int i = 0; i < na.ndof; ++i)
+          for (int j = 0; j < nb.ndof; ++j) targets_.push_back(value_index(na.dof + i, nb.dof + j));
+      block_target_offset_[k + 1] = static_cast<Index>(targets_.size());
+    }
+  }
+  diagonal_target_.resize(static_cast<std::size_t>(num_dofs_));
+  for (Index i = 0; i < num_dofs_; ++i) diagonal_target_[i] = value_index(i, i);
+  bound_version_ = H.pattern_version();
+}
+
+void DofMap::reduce_hessian(const State& state, const BlockSparseMatrix& H, const NodalVectors& g,
+                            const VectorX& node_viscosity, SparseMatrix& K) const {
+  if (bound_version_ != H.pattern_version()) throw Error("DofMap::reduce_hessian: pattern not bound");
+  if (K.nonZeros() != pattern_.nonZeros() || K.rows() != num_dofs_) K = pattern_;
+  double* values = K.valuePtr();
+  std::fill(values, values + K.nonZeros(), 0.0);
+
+  const auto& offsets = H.row_offsets();
+  const auto& cols = H.columns();
+  const auto& blocks = H.values();
+  const Index n = H.num_nodes();
+  // Node Jacobians, computed once per node.
+  std::vector<Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6>> jac(static_cast<std::size_t>(n));
+  std::vector<char> identity(static_cast<std::size_t>(n), 0);
+  for (Index a = 0; a < n; ++a) {
+    if (node_[a].ndof == 0) continue;
+    identity[a] = node_[a].kind == NodeKind::Free;
+    if (!identity[a]) jac[a] = node_jacobian(state, a);
+  }
+  for (Index a = 0; a < n; ++a) {
+    const NodeInfo& na = node_[a];
+    if (na.ndof == 0) continue;
+    for (Index k = offsets[a]; k < offsets[a + 1]; ++k) {
+      const Index b = cols[k];
+      const NodeInfo& nb = node_[b];
+      if (nb.ndof == 0) continue;
+      const Index* target = targets_.data() + block_target_offset_[k];
+      if (identity[a] && identity[b]) {
+        const Matrix3& M = blocks[k];
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) values[target[3 * i + j]] += M(i, j);
+      } else {
+        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6> M =
+            (identity[a] ? Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6>(Matrix3::Identity()) : jac[a])
+                .transpose() *
+            blocks[k] * (identity[b] ? Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6>(Matrix3::Identity()) : jac[b]);
+        for (int i = 0; i < na.ndof; ++i)
+          for (int j = 0; j < nb.ndof; ++j) values[target[nb.ndof * i + j]] += M(i, j);
+      }
+    }
+  }
+  // Second-order term of the rotation map: sum_a sym(g_a arm_a^T)/... (see header).
+  for (std::size_t r = 0; r < rigid_.size(); ++r) {
+    const RigidInfo& info = rigid_[r];
+    if (info.kind != RigidBody::Kind::Free) continue;
+    Matrix3 G = Matrix3::Zero();
+    for (Index a : info.members) {
+      const Vector3 arm = state.x.row(a).transpose() - (info.center + state.rigid[r].t);
+      const Vector3 ga = g.row(a).transpose();
+      G += 0.5 * (ga * arm.transpose() + arm * ga.transpose()) - ga.dot(arm) * Matrix3::Identity();
+    }
+    const Index* diag_block = nullptr;
+    (void)diag_block;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const Index row = info.dof + 3 + i, col = info.dof + 3 + j;
+        const int* begin = K.innerIndexPtr() + K.outerIndexPtr()[col];
+        const int* end = K.innerIndexPtr() + K.outerIndexPtr()[col + 1];
+        values[std::lower_bound(begin, end, row) - K.innerIndexPtr()] += G(i, j);
+      }
+  }
+  if (node_viscosity.size() == n) {
+    for (Index a = 0; a < n; ++a) {
+      const NodeInfo& na = node_[a];
+      if (na.kind != NodeKind::Free && na.kind != NodeKind::Planar) continue;
+      for (int i = 0; i < na.ndof; ++i) values[diagonal_target_[na.dof + i]] += node_viscosity[a];
+    }
+  }
+}
+
+State DofMap::apply_step(const State& base, const VectorX& dq, double alpha) const {
+  State out = base;
+  for (Index a = 0; a < static_cast<Index>(node_.size()); ++a) {
+    const NodeInfo& node = node_[a];
+    if (node.kind != NodeKind::Free && node.kind != NodeKind::Planar) continue;
+    Vector3 dx = Vector3::Zero();
+    for (int j = 0; j < node.ndof; ++j) dx += node.basis.col(j) * dq[node.dof + j];
+    out.x.row(a) += alpha * dx.transpose();
+  }
+  for (std::size_t r = 0; r < rigid_.size(); ++r) {
+    if (rigid_[r].kind != RigidBody::Kind::Free) continue;
+    const Index d = rigid_[r].dof;
+    out.rigid[r].t += alpha * dq.segment<3>(d);
+    out.rigid[r].R = rotation_from_vector(alpha * dq.segment<3>(d + 3)) * base.rigid[r].R;
+    place_rigid_members(out, r);
+  }
+  return out;
+}
+
+State DofMap::extrapolate(const State& older, const State& newer, double s, double lambda) const {
+  State out = newer;
+  for (Index a = 0; a < static_cast<Index>(node_.size()); ++a) {
+    const NodeKind k = node_[a].kind;
+    if (k == NodeKind::Free || k == NodeKind::Planar) out.x.row(a) += s * (newer.x.row(a) - older.x.row(a));
+  }
+  for (std::size_t r = 0; r < rigid_.size(); ++r) {
+    if (rigid_[r].kind != RigidBody::Kind::Free) continue;
+    out.rigid[r].t += s * (newer.rigid[r].t - older.rigid[r].t);
+    const Vector3 w = rotation_to_vector(newer.rigid[r].R * older.rigid[r].R.transpose());
+    out.rigid[r].R = rotation_from_vector(s * w) * newer.rigid[r].R;
+  }
+  sync(out, lambda);
+  return out;
+}
+
+}  // namespace sinew::fem

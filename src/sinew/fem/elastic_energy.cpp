@@ -1,0 +1,177 @@
+#include "sinew/fem/elastic_energy.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include "sinew/core/error.hpp"
+#include "sinew/core/psd_projection.hpp"
+
+namespace sinew::fem {
+namespace {
+
+/// Node gradients of one tet from P: V0 B^T vec(P), as 12-vector.
+Vector12 tet_gradient(const Matrix3& P, const TetRestShape& rest) {
+  const Matrix3 H = rest.volume * P * rest.Dm_inv.transpose();  // columns: forces on nodes 1..3
+  Vector12 g;
+  g.segment<3>(3) = H.col(0);
+  g.segment<3>(6) = H.col(1);
+  g.segment<3>(9) = H.col(2);
+  g.segment<3>(0) = -(H.col(0) + H.col(1) + H.col(2));
+  return g;
+}
+
+}  // namespace
+
+ElasticEnergy::ElasticEnergy(const Positions& rest, const Tets& tets,
+                             std::vector<material::MaterialPtr> tet_material, ElasticEnergyOptions options)
+    : tets_(tets), material_(std::move(tet_material)), options_(options) {
+  if (material_.size() != static_cast<std::size_t>(tets.rows()))
+    throw Error("ElasticEnergy: one material per tet expected");
+  rest_ = compute_rest_shapes(rest, tets);
+  num_nodes_ = static_cast<Index>(rest.rows());
+  for (Index t = 0; t < tets.rows(); ++t)
+    if (material_[t]) active_.push_back(t);
+
+  incidence_offsets_.assign(static_cast<std::size_t>(num_nodes_) + 1, 0);
+  for (Index t : active_)
+    for (int i = 0; i < 4; ++i) ++incidence_offsets_[tets(t, i) + 1];
+  for (Index a = 0; a < num_nodes_; ++a) incidence_offsets_[a + 1] += incidence_offsets_[a];
+  incidence_.resize(incidence_offsets_.back());
+  std::vector<Index> fill(incidence_offsets_.begin(), incidence_offsets_.end() - 1);
+  for (std::size_t s = 0; s < active_.size(); ++s)
+    for (int i = 0; i < 4; ++i) incidence_[fill[tets(active_[s], i)]++] = static_cast<Index>(4 * s + i);
+}
+
+double ElasticEnergy::value(const Positions& x) const {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, active_.size(), 512), 0.0,
+      [&](const tbb::blocked_range<std::size_t>& r, double sum) {
+        for (std::size_t s = r.begin(); s < r.end(); ++s) {
+          const Index t = active_[s];
+          const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[t].Dm_inv);
+          sum += rest_[t].volume * material_[t]->evaluate(F, nullptr, nullptr);
+        }
+        return sum;
+      },
+      [](double a, double b) { return a + b; });
+}
+
+bool ElasticEnergy::is_valid(const Positions& x) const {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, active_.size(), 1024), true,
+      [&](const tbb::blocked_range<std::size_t>& r, bool ok) {
+        for (std::size_t s = r.begin(); s < r.end() && ok; ++s) {
+          const Index t = active_[s];
+          const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[t].Dm_inv);
+          const double J = F.determinant();
+          ok = std::isfinite(J) && J > 0;
+        }
+        return ok;
+      },
+      [](bool a, bool b) { return a && b; });
+}
+
+void ElasticEnergy::add_gradient(const Positions& x, NodalVectors& grad) const {
+  std::vector<Vector12> local(active_.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, active_.size(), 512), [&](const auto& r) {
+    for (std::size_t s = r.begin(); s < r.end(); ++s) {
+      const Index t = active_[s];
+      const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[t].Dm_inv);
+      Matrix3 P;
+      material_[t]->evaluate(F, &P, nullptr);
+      local[s] = tet_gradient(P, rest_[t]);
+    }
+  });
+  tbb::parallel_for(tbb::blocked_range<Index>(0, num_nodes_, 1024), [&](const auto& r) {
+    for (Index a = r.begin(); a < r.end(); ++a) {
+      Vector3 sum = Vector3::Zero();
+      for (Index k = incidence_offsets_[a]; k < incidence_offsets_[a + 1]; ++k) {
+        const Index slot = incidence_[k];
+        sum += local[slot / 4].segment<3>(3 * (slot % 4));
+      }
+      grad.row(a) += sum.transpose();
+    }
+  });
+}
+
+void ElasticEnergy::hessian_pattern(std::vector<std::pair<Index, Index>>& pairs) const {
+  pairs.reserve(pairs.size() + 6 * active_.size());
+  for (Index t : active_)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) pairs.emplace_back(tets_(t, i), tets_(t, j));
+}
+
+void ElasticEnergy::bind_pattern(const BlockSparseMatrix& H) {
+  block_index_.resize(16 * active_.size());
+  for (std::size_t s = 0; s < active_.size(); ++s) {
+    const Index t = active_[s];
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const Index k = H.find(tets_(t, i), tets_(t, j));
+        if (k < 0) throw Error("ElasticEnergy::bind_pattern: Hessian pattern lacks a tet block");
+        block_index_[16 * s + 4 * i + j] = k;
+      }
+  }
+  bound_version_ = H.pattern_version();
+}
+
+void ElasticEnergy::add_hessian(const Positions& x, BlockSparseMatrix& H) const {
+  if (bound_version_ != H.pattern_version() || block_index_.size() != 16 * active_.size())
+    throw Error("ElasticEnergy::add_hessian: call bind_pattern() after the pattern changes");
+  std::vector<Matrix12> local(active_.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, active_.size(), 256), [&](const auto& r) {
+    for (std::size_t s = r.begin(); s < r.end(); ++s) {
+      const Index t = active_[s];
+      const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[t].Dm_inv);
+      Matrix3 P;
+      Matrix9 dPdF;
+      material_[t]->evaluate(F, &P, &dPdF);
+      if (options_.project_hessians) dPdF = project_to_psd(dPdF);
+      const Eigen::Matrix<double, 9, 12> B = deformation_gradient_jacobian(rest_[t].Dm_inv);
+      local[s].noalias() = rest_[t].volume * (B.transpose() * dPdF * B);
+    }
+  });
+  // Gather by rows: each node's row blocks are written by one thread only.
+  auto& values = H.values();
+  tbb::parallel_for(tbb::blocked_range<Index>(0, num_nodes_, 512), [&](const auto& r) {
+    for (Index a = r.begin(); a < r.end(); ++a) {
+      for (Index k = incidence_offsets_[a]; k < incidence_offsets_[a + 1]; ++k) {
+        const Index slot = incidence_[k];
+        const std::size_t s = static_cast<std::size_t>(slot / 4);
+        const int i = slot % 4;
+        for (int j = 0; j < 4; ++j)
+          values[static_cast<std::size_t>(block_index_[16 * s + 4 * i + j])] += local[s].block<3, 3>(3 * i, 3 * j);
+      }
+    }
+  });
+}
+
+TetMeasures compute_tet_measures(const Positions& x, const Tets& tets,
+                                 const std::vector<material::MaterialPtr>& tet_material,
+                                 const std::vector<TetRestShape>& rest) {
+  TetMeasures m;
+  m.J = VectorX::Ones(tets.rows());
+  m.von_mises = VectorX::Zero(tets.rows());
+  tbb::parallel_for(Index(0), static_cast<Index>(tets.rows()), [&](Index t) {
+    if (!tet_material[t]) return;
+    const Matrix3 F = deformation_gradient(gather_tet(x, tets, t), rest[t].Dm_inv);
+    const double J = F.determinant();
+    m.J[t] = J;
+    if (!(J > 0)) {
+      m.von_mises[t] = std::numeric_limits<double>::quiet_NaN();
+      return;
+    }
+    Matrix3 P;
+    tet_material[t]->evaluate(F, &P, nullptr);
+    const Matrix3 sigma = P * F.transpose() / J;
+    const Matrix3 dev = sigma - sigma.trace() / 3.0 * Matrix3::Identity();
+    m.von_mises[t] = std::sqrt(1.5 * dev.squaredNorm());
+  });
+  return m;
+}
+
+}  // namespace sinew::fem

@@ -1,0 +1,63 @@
+#pragma once
+/// @file elastic_energy.hpp
+/// Sum over deformable tets of V0 psi(F): the stored elastic energy (energy unit =
+/// stress x volume). Tets whose material is null (rigid regions) contribute nothing.
+
+#include <vector>
+
+#include "sinew/fem/energy.hpp"
+#include "sinew/fem/tet_kinematics.hpp"
+#include "sinew/material/material.hpp"
+
+namespace sinew::fem {
+
+struct ElasticEnergyOptions {
+  /// Project each tet's dP/dF onto the positive semi-definite cone (a convex Newton model).
+  bool project_hessians = false;
+};
+
+class ElasticEnergy final : public Energy {
+ public:
+  /// `tet_material`: one law per tet (#T), nullptr = rigid/no elastic energy.
+  ElasticEnergy(const Positions& rest, const Tets& tets, std::vector<material::MaterialPtr> tet_material,
+                ElasticEnergyOptions options = {});
+
+  std::string_view name() const override { return "elastic"; }
+  double value(const Positions& x) const override;
+  void add_gradient(const Positions& x, NodalVectors& grad) const override;
+  void add_hessian(const Positions& x, BlockSparseMatrix& H) const override;
+  void hessian_pattern(std::vector<std::pair<Index, Index>>& pairs) const override;
+  bool is_valid(const Positions& x) const override;
+
+  /// Caches, for every deformable tet, the block indices of its 16 node pairs in H.
+  /// Must be called after H's pattern is set and before add_hessian().
+  void bind_pattern(const BlockSparseMatrix& H) override;
+
+  const std::vector<Index>& deformable_tets() const { return active_; }
+  const std::vector<TetRestShape>& rest_shapes() const { return rest_; }
+  void set_options(const ElasticEnergyOptions& options) { options_ = options; }
+
+ private:
+  const Tets& tets_;
+  std::vector<material::MaterialPtr> material_;  // per tet
+  std::vector<TetRestShape> rest_;               // per tet
+  std::vector<Index> active_;                    // deformable tets
+  ElasticEnergyOptions options_;
+  Index num_nodes_ = 0;
+  // node -> (active tet slot * 4 + local node) for race-free gathering, CSR
+  std::vector<Index> incidence_offsets_, incidence_;
+  std::vector<Index> block_index_;  // 16 per active tet, row-major (i, j)
+  std::uint64_t bound_version_ = 0;
+};
+
+/// Per-tet measures for output: J = det F, and the von Mises equivalent of the Cauchy
+/// stress (stress unit). Rigid tets get J = 1 and zero stress.
+struct TetMeasures {
+  VectorX J;
+  VectorX von_mises;
+};
+TetMeasures compute_tet_measures(const Positions& x, const Tets& tets,
+                                 const std::vector<material::MaterialPtr>& tet_material,
+                                 const std::vector<TetRestShape>& rest);
+
+}  // namespace sinew::fem

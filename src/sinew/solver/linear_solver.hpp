@@ -1,0 +1,37 @@
+#pragma once
+/// @file linear_solver.hpp
+/// Linear solvers for the Newton systems K dq = -g (K symmetric, usually positive definite):
+/// CHOLMOD's supernodal Cholesky (default), GMRES with diagonal preconditioning stopped at a
+/// loose relative residual (the seed's choice), and diagonally preconditioned CG.
+
+#include <memory>
+
+#include "sinew/fem/dof_map.hpp"
+#include "sinew/solver/solver_config.hpp"
+
+namespace sinew::solver {
+
+using fem::SparseMatrix;
+
+struct LinearSolveStats {
+  bool success = false;
+  int iterations = 0;             ///< 0 for direct solvers
+  double relative_residual = 0;   ///< |K x - b| / |b|
+};
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  /// Symbolic work for K's sparsity pattern (call again when the pattern changes).
+  virtual void analyze(const SparseMatrix& K) = 0;
+  /// Numeric setup for K's values. Returns false when K cannot be factorized (Cholesky of an
+  /// indefinite matrix); the caller then regularizes.
+  virtual bool factorize(const SparseMatrix& K) = 0;
+  /// Solves K x = b with the last factorized K.
+  virtual LinearSolveStats solve(const VectorX& b, VectorX& x) = 0;
+  virtual const char* name() const = 0;
+};
+
+std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options);
+
+}  // namespace sinew::solver

@@ -1,0 +1,196 @@
+#include "sinew/solver/newton.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace sinew::solver {
+namespace {
+
+class Stopwatch {
+ public:
+  explicit Stopwatch(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
+  ~Stopwatch() { sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  Stopwatch(const Stopwatch&) = delete;
+  Stopwatch& operator=(const Stopwatch&) = delete;
+
+ private:
+  double& sink_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+double largest_displacement(const fem::State& a, const fem::State& b) {
+  return (a.x - b.x).rowwise().norm().maxCoeff();
+}
+
+struct Direction {
+  VectorX dq;
+  int linear_iterations = 0;
+  double regularization = 0;
+};
+
+/// Solves K dq = -g; when K is not positive definite or the result is not a descent direction,
+/// retries with K + shift * diag(K), shift growing tenfold from 1e-8.
+Direction newton_direction(const fem::SparseMatrix& K, bool fresh_pattern, const VectorX& g, LinearSolver& linear,
+                           PhaseTimes& times) {
+  Stopwatch watch(times.linear_solve);
+  Direction d;
+  if (fresh_pattern) linear.analyze(K);
+  const VectorX diag = K.diagonal().cwiseAbs().cwiseMax(1e-300);
+  double shift = 0;
+  fem::SparseMatrix shifted;
+  for (int attempt = 0; attempt < 12; ++attempt) {
+    const fem::SparseMatrix* M = &K;
+    if (shift > 0) {
+      shifted = K;
+      for (int k = 0; k < shifted.outerSize(); ++k) shifted.coeffRef(k, k) += shift * diag[k];
+      M = &shifted;
+    }
+    if (linear.factorize(*M)) {
+      VectorX dq;
+      const LinearSolveStats stats = linear.solve(-g, dq);
+      d.linear_iterations += stats.iterations;
+      if (stats.success && g.dot(dq) < 0) {
+        d.dq = std::move(dq);
+        d.regularization = shift;
+        return d;
+      }
+    }
+    shift = shift == 0 ? 1e-8 : shift * 10;
+  }
+  // Last resort: diagonally scaled steepest descent.
+  d.dq = -g.cwiseQuotient(diag);
+  d.regularization = std::numeric_limits<double>::infinity();
+  return d;
+}
+
+}  // namespace
+
+NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonOptions& options,
+                          LinearSolver& linear, fem::SparseMatrix& K, const NewtonContext& context,
+                          PhaseTimes& times) {
+  const fem::DofMap& dofs = objective.dofs();
+  NewtonResult result;
+  double energy;
+  {
+    Stopwatch watch(times.line_search);
+    energy = objective.value(state);
+  }
+  if (!std::isfinite(energy)) {
+    result.failure = "the starting state is illegal (an element is inverted or degenerate)";
+    return result;
+  }
+  double scale = 0;
+  fem::NodalVectors full_g;
+  VectorX g;
+  {
+    Stopwatch watch(times.forces_and_stiffness);
+    full_g = objective.full_gradient(state, &scale);
+    g = dofs.reduce_gradient(state, full_g);
+  }
+  double residual = g.norm();
+  IterationRecord record;
+  record.residual = residual;
+  record.force_scale = scale;
+  record.energy = energy;
+  if (context.on_iteration) context.on_iteration(record);
+
+  double increment = std::numeric_limits<double>::infinity();
+  for (int it = 0;; ++it) {
+    const double tolerance = options.residual_tolerance * std::max(scale, 1e-300);
+    const bool small_residual = residual <= tolerance;
+    const bool small_increment = it == 0 || increment <= options.increment_tolerance * context.characteristic_length;
+    result.iterations = it;
+    result.residual = residual;
+    result.force_scale = scale;
+    result.energy = energy;
+    if ((small_residual && small_increment) || dofs.num_dofs() == 0) {
+      result.converged = true;
+      return result;
+    }
+    if (it == options.max_iterations) {
+      result.failure = fmt::format("no convergence in {} Newton iterations (residual {:.3e}, tolerance {:.3e})",
+                                   it, residual, tolerance);
+      return result;
+    }
+
+    bool fresh;
+    {
+      Stopwatch watch(times.forces_and_stiffness);
+      fresh = objective.hessian(state, full_g, context.node_viscosity, K);
+    }
+    const Direction direction = newton_direction(K, fresh, g, linear, times);
+    const double slope = g.dot(direction.dq);
+
+    // Line search: halve until legal and decreasing.
+    double alpha = 1;
+    int halvings = 0;
+    bool accepted = false;
+    fem::State trial;
+    double trial_energy = 0;
+    fem::NodalVectors trial_full_g;
+    VectorX trial_g;
+    double trial_scale = 0;
+    for (; halvings <= options.max_line_search_steps; ++halvings, alpha *= 0.5) {
+      {
+        Stopwatch watch(times.line_search);
+        trial = dofs.apply_step(state, direction.dq, alpha);
+        trial_energy = objective.value(trial);
+      }
+      if (!std::isfinite(trial_energy)) continue;
+      const bool residual_rule = options.line_search == NewtonOptions::LineSearchRule::Residual;
+      const double roundoff = 1e-11 * std::max({std::abs(energy), std::abs(trial_energy), 1e-300});
+      const bool decreases = trial_energy <= energy + 1e-4 * alpha * slope;
+      const bool flat = std::abs(trial_energy - energy) <= roundoff;
+      if (!residual_rule && decreases) {
+        accepted = true;
+        break;
+      }
+      if (residual_rule || flat) {
+        Stopwatch watch(times.forces_and_stiffness);
+        trial_full_g = objective.full_gradient(trial, &trial_scale);
+        trial_g = dofs.reduce_gradient(trial, trial_full_g);
+        if (trial_g.norm() < residual) {
+          accepted = true;
+          break;
+        }
+        trial_full_g.resize(0, 3);
+      }
+    }
+    if (!accepted) {
+      result.failure = fmt::format(
+          "line search failed: no legal, decreasing step after {} halvings (residual {:.3e})",
+          options.max_line_search_steps, residual);
+      return result;
+    }
+    increment = largest_displacement(trial, state);
+    state = std::move(trial);
+    energy = trial_energy;
+    if (trial_full_g.rows() == 0) {
+      Stopwatch watch(times.forces_and_stiffness);
+      full_g = objective.full_gradient(state, &scale);
+      g = dofs.reduce_gradient(state, full_g);
+    } else {
+      full_g = std::move(trial_full_g);
+      g = std::move(trial_g);
+      scale = trial_scale;
+    }
+    residual = g.norm();
+
+    record = IterationRecord{};
+    record.iteration = it + 1;
+    record.residual = residual;
+    record.force_scale = scale;
+    record.energy = energy;
+    record.step_length = alpha;
+    record.line_search_steps = halvings;
+    record.linear_iterations = direction.linear_iterations;
+    record.increment = increment;
+    record.regularization = direction.regularization;
+    if (context.on_iteration) context.on_iteration(record);
+  }
+}
+
+}  // namespace sinew::solver

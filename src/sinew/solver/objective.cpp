@@ -1,0 +1,72 @@
+#include "sinew/solver/objective.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sinew::solver {
+
+Objective::Objective(fem::DofMap& dofs, std::vector<fem::Energy*> terms, Index num_nodes)
+    : dofs_(dofs), terms_(std::move(terms)), num_nodes_(num_nodes) {}
+
+void Objective::set_load_parameter(double lambda) {
+  for (auto* term : terms_) term->set_load_parameter(lambda);
+}
+
+bool Objective::is_valid(const fem::State& state) const {
+  if (!state.x.allFinite()) return false;
+  for (auto* term : terms_)
+    if (!term->is_valid(state.x)) return false;
+  return true;
+}
+
+double Objective::value(const fem::State& state) const {
+  if (!is_valid(state)) return std::numeric_limits<double>::infinity();
+  double sum = 0;
+  for (auto* term : terms_) sum += term->value(state.x);
+  return std::isnan(sum) ? std::numeric_limits<double>::infinity() : sum;
+}
+
+fem::NodalVectors Objective::full_gradient(const fem::State& state, double* force_scale) const {
+  fem::NodalVectors g = fem::NodalVectors::Zero(num_nodes_, 3);
+  if (!force_scale) {
+    for (auto* term : terms_) term->add_gradient(state.x, g);
+    return g;
+  }
+  *force_scale = 0;
+  fem::NodalVectors term_gradient(num_nodes_, 3);
+  for (auto* term : terms_) {
+    term_gradient.setZero();
+    term->add_gradient(state.x, term_gradient);
+    *force_scale = std::max(*force_scale, term_gradient.norm());
+    g += term_gradient;
+  }
+  return g;
+}
+
+void Objective::rebuild_pattern() {
+  std::vector<std::pair<Index, Index>> pairs;
+  for (auto* term : terms_) term->hessian_pattern(pairs);
+  H_.set_pattern(num_nodes_, std::move(pairs));
+  for (auto* term : terms_) term->bind_pattern(H_);
+  dofs_.bind_pattern(H_);
+  pattern_ready_ = true;
+}
+
+bool Objective::hessian(const fem::State& state, const fem::NodalVectors& full_gradient,
+                        const VectorX& node_viscosity, fem::SparseMatrix& K) {
+  bool fresh = false;
+  if (!pattern_ready_) {
+    rebuild_pattern();
+    fresh = true;
+  }
+  H_.set_zero();
+  for (auto* term : terms_)
+    if (term->has_hessian()) term->add_hessian(state.x, H_);
+  const auto nnz_before = K.nonZeros();
+  const auto rows_before = K.rows();
+  dofs_.reduce_hessian(state, H_, full_gradient, node_viscosity, K);
+  return fresh || K.nonZeros() != nnz_before || K.rows() != rows_before;
+}
+
+}  // namespace sinew::solver
