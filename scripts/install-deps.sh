@@ -14,6 +14,7 @@ PACKAGES=(
   libcli11-dev           # command line
   libfmt-dev libspdlog-dev  # formatting and logging
   libgtest-dev libgmock-dev # unit tests
+  python3-meshio         # tests read our VTU files back with an independent reader
   libbenchmark-dev       # benchmarks
   python3 python3-numpy python3-matplotlib  # plots and renders
 )
