@@ -197,6 +197,6 @@ TEST(Reactions, BalanceGravityOnAFixedBody) {
   const auto reactions = fem::compute_reactions(p, dofs, s, g);
   ASSERT_EQ(reactions.size(), 1u);
   Vector3 expected = Vector3::Zero();
-  for (Index a : p.prescribed[0].nodes) expected -= g.row(a).transpose();
+  for (Index a : p.prescribed[0].nodes) expected += g.row(a).transpose();
   EXPECT_LT((reactions[0].force - expected).norm(), 1e-12);
 }

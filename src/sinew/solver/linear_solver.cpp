@@ -14,6 +14,10 @@ double relative_residual(const SparseMatrix& K, const VectorX& x, const VectorX&
 
 class CholmodSolver final : public LinearSolver {
  public:
+  CholmodSolver() {
+    // An indefinite matrix is an expected event (the caller regularizes); keep CHOLMOD quiet.
+    llt_.cholmod().print = 0;
+  }
   void analyze(const SparseMatrix& K) override { llt_.analyzePattern(K); }
   bool factorize(const SparseMatrix& K) override {
     K_ = &K;

@@ -66,6 +66,9 @@ Direction newton_direction(const fem::SparseMatrix& K, bool fresh_pattern, const
   return d;
 }
 
+/// Residuals below this fraction of the reference force are round-off.
+constexpr double kRoundoffResidual = 1e-13;
+
 }  // namespace
 
 NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonOptions& options,
@@ -99,9 +102,11 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
 
   double increment = std::numeric_limits<double>::infinity();
   for (int it = 0;; ++it) {
-    const double tolerance = options.residual_tolerance * std::max(scale, 1e-300);
+    const double tolerance =
+        std::max(options.residual_tolerance * scale, kRoundoffResidual * context.reference_force);
     const bool small_residual = residual <= tolerance;
-    const bool small_increment = it == 0 || increment <= options.increment_tolerance * context.characteristic_length;
+    const bool roundoff = residual <= kRoundoffResidual * context.reference_force;
+    const bool small_increment = it == 0 || roundoff || increment <= options.increment_tolerance * context.characteristic_length;
     result.iterations = it;
     result.residual = residual;
     result.force_scale = scale;

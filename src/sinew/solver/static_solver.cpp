@@ -60,6 +60,7 @@ StaticResult solve_static(Objective& objective, const StaticSolverOptions& optio
   NewtonContext context;
   context.characteristic_length = setup.characteristic_length;
   context.node_viscosity = setup.node_viscosity;
+  context.reference_force = setup.reference_force;
   StepRecord attempt;
   context.on_iteration = [&](const IterationRecord& it) {
     if (it.iteration > 0) linear_ready = true;

@@ -38,6 +38,7 @@ struct StaticCallbacks {
 
 struct StaticSetup {
   double characteristic_length = 1;  ///< length scale of the increment criterion
+  double reference_force = 0;        ///< see NewtonContext::reference_force
   VectorX node_viscosity;            ///< quasi-viscosity per node, or empty
 };
 

@@ -1,0 +1,271 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "sinew/fem/elastic_energy.hpp"
+#include "sinew/fem/external_force_energy.hpp"
+#include "sinew/fem/reactions.hpp"
+#include "sinew/solver/static_solver.hpp"
+#include "support/problem_builder.hpp"
+
+using namespace sinew;
+namespace st = sinew::testing;
+
+namespace {
+
+/// Closed form of uniaxial tension for the seed's Mooney-Rivlin law, F = diag(l, s, s):
+/// the lateral stretch s zeroes the lateral nominal stress; returns (s, axial nominal stress).
+std::pair<double, double> mooney_rivlin_uniaxial(double C1, double C2, double a, double l) {
+  const double c = C1 + 2 * C2 + a;
+  auto lateral = [&](double s) { return 2 * C1 * s + 2 * C2 * s * (l * l + s * s) + 2 * a * s * s * s * l * l - 2 * c / s; };
+  double lo = 1e-3, hi = 10;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (lateral(mid) > 0 ? hi : lo) = mid;
+  }
+  const double s = 0.5 * (lo + hi);
+  const double axial = 2 * C1 * l + 4 * C2 * l * s * s + 2 * a * l * s * s * s * s - 2 * c / l;
+  return {s, axial};
+}
+
+struct SolverRig {
+  fem::Problem problem;
+  std::unique_ptr<fem::DofMap> dofs;
+  std::unique_ptr<fem::ElasticEnergy> elastic;
+  std::unique_ptr<fem::ExternalForceEnergy> external;
+  std::unique_ptr<solver::Objective> objective;
+
+  explicit SolverRig(fem::Problem p, fem::ElasticEnergyOptions options = {}) : problem(std::move(p)) {
+    dofs = std::make_unique<fem::DofMap>(problem);
+    elastic = std::make_unique<fem::ElasticEnergy>(problem.mesh.rest, problem.mesh.tets, st::tet_materials(problem),
+                                                   options);
+    external = std::make_unique<fem::ExternalForceEnergy>(
+        fem::lumped_masses(problem.mesh.rest, problem.mesh.tets, problem.mesh.region, problem.region_density),
+        problem.gravity, fem::Amplitude{}, problem.forces, problem.mesh.num_nodes());
+    objective = std::make_unique<solver::Objective>(*dofs, std::vector<fem::Energy*>{elastic.get(), external.get()},
+                                                    problem.mesh.num_nodes());
+  }
+};
+
+fem::Problem uniaxial_problem(double stretch, double C1, double C2, double a) {
+  auto p = st::box_problem(3, 2, 2, Vector3(0, 0, 0), Vector3(1, 1, 1), st::mooney_rivlin(C1, C2, a));
+  p.planar.push_back({"x0", st::nodes_on_plane(p.mesh, 0, 0.0), Vector3::UnitX(), 0.0, {}});
+  p.planar.push_back({"y0", st::nodes_on_plane(p.mesh, 1, 0.0), Vector3::UnitY(), 0.0, {}});
+  p.planar.push_back({"z0", st::nodes_on_plane(p.mesh, 2, 0.0), Vector3::UnitZ(), 0.0, {}});
+  p.planar.push_back({"pull", st::nodes_on_plane(p.mesh, 0, 1.0), Vector3::UnitX(), stretch - 1.0, {}});
+  return p;
+}
+
+}  // namespace
+
+TEST(StaticSolver, UniaxialMooneyRivlinMatchesClosedForm) {
+  const double C1 = 0.5, C2 = 0.2, a = 1.5, stretch = 1.6;
+  SolverRig run(uniaxial_problem(stretch, C1, C2, a));
+  solver::StaticSolverOptions options;
+  options.stepping.increments = 4;
+  options.newton.residual_tolerance = 1e-12;
+  options.newton.increment_tolerance = 1e-12;
+  const auto result = solver::solve_static(*run.objective, options, {.characteristic_length = std::sqrt(3.0), .reference_force = 1.0});
+  ASSERT_TRUE(result.success) << result.message;
+
+  const auto [s, axial] = mooney_rivlin_uniaxial(C1, C2, a, stretch);
+  const auto& x = result.last_converged.x;
+  for (Index v = 0; v < x.rows(); ++v) {
+    const Vector3 X = run.problem.mesh.rest.row(v).transpose();
+    EXPECT_NEAR(x(v, 0), stretch * X.x(), 1e-9);
+    EXPECT_NEAR(x(v, 1), s * X.y(), 1e-9);
+    EXPECT_NEAR(x(v, 2), s * X.z(), 1e-9);
+  }
+  const auto g = run.objective->full_gradient(result.last_converged);
+  const auto reactions = fem::compute_reactions(run.problem, *run.dofs, result.last_converged, g);
+  // "pull" holds the x = 1 face: its force on the body is the nominal stress times the unit rest
+  // area, pulling in +x; "x0" pulls the other way.
+  const double force = reactions[3].force.x();
+  EXPECT_NEAR(force / axial, 1.0, 1e-6) << "FE force " << force << " closed form " << axial;
+  EXPECT_NEAR(reactions[0].force.x() / -axial, 1.0, 1e-6);
+}
+
+TEST(StaticSolver, PatchTestOnADistortedMeshReproducesTheHomogeneousState) {
+  // The uniaxial setup on a mesh whose interior nodes are moved off the grid: linear tets must
+  // reproduce the homogeneous solution exactly, whatever their shapes.
+  const double C1 = 0.8, C2 = 0.1, a = 2.0, stretch = 0.75;
+  fem::Problem p = uniaxial_problem(stretch, C1, C2, a);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-0.08, 0.08);
+  for (Index v = 0; v < p.mesh.num_nodes(); ++v) {
+    const auto X = p.mesh.rest.row(v);
+    if (X.minCoeff() > 1e-12 && X.maxCoeff() < 1 - 1e-12)
+      for (int k = 0; k < 3; ++k) p.mesh.rest(v, k) += u(rng);
+  }
+  SolverRig run(std::move(p));
+  solver::StaticSolverOptions options;
+  options.stepping.increments = 3;
+  options.newton.residual_tolerance = 1e-12;
+  const auto result = solver::solve_static(*run.objective, options, {.characteristic_length = 1.0, .reference_force = 1.0});
+  ASSERT_TRUE(result.success) << result.message;
+  const double s = mooney_rivlin_uniaxial(C1, C2, a, stretch).first;
+  for (Index v = 0; v < run.problem.mesh.num_nodes(); ++v) {
+    const Vector3 X = run.problem.mesh.rest.row(v).transpose();
+    EXPECT_NEAR((result.last_converged.x.row(v).transpose() - Vector3(stretch * X.x(), s * X.y(), s * X.z())).norm(), 0,
+                1e-9);
+  }
+}
+
+TEST(StaticSolver, RigidBoundaryMotionMovesTheInteriorRigidly) {
+  auto p = st::box_problem(3, 3, 3, Vector3(0, 0, 0), Vector3(1, 1, 1), st::mooney_rivlin(1.0, 0.5, 3.0));
+  std::vector<Index> boundary;
+  for (Index v = 0; v < p.mesh.num_nodes(); ++v) {
+    const auto X = p.mesh.rest.row(v);
+    if (X.minCoeff() < 1e-12 || X.maxCoeff() > 1 - 1e-12) boundary.push_back(v);
+  }
+  fem::RigidMotion motion;
+  motion.angle = 1.2;
+  motion.axis = Vector3(1, 2, 2);
+  motion.axis_point = Vector3(0.5, 0.5, 0.5);
+  motion.translation = Vector3(0.3, 0, -0.2);
+  p.prescribed.push_back({"boundary", boundary, motion});
+  SolverRig run(std::move(p));
+  solver::StaticSolverOptions options;
+  options.stepping.increments = 3;
+  options.newton.residual_tolerance = 1e-10;
+  const auto result = solver::solve_static(*run.objective, options, {.characteristic_length = 1.0, .reference_force = 1.0});
+  ASSERT_TRUE(result.success) << result.message;
+  for (Index v = 0; v < run.problem.mesh.num_nodes(); ++v) {
+    const Vector3 expected = motion.apply(run.problem.mesh.rest.row(v).transpose(), 1.0);
+    EXPECT_NEAR((result.last_converged.x.row(v).transpose() - expected).norm(), 0, 1e-8);
+  }
+}
+
+TEST(StaticSolver, NewtonConvergesQuadraticallyOnASmoothCase) {
+  SolverRig run(uniaxial_problem(1.3, 0.5, 0.2, 1.5));
+  solver::StaticSolverOptions options;
+  options.stepping.increments = 1;
+  options.stepping.predictor = solver::LoadSteppingOptions::Predictor::None;
+  options.newton.residual_tolerance = 1e-13;
+  options.newton.increment_tolerance = 0;
+  std::vector<double> residuals;
+  solver::StaticCallbacks callbacks;
+  callbacks.on_iteration = [&](const solver::StepRecord& step, const solver::IterationRecord& it) {
+    if (step.step == 1) residuals.push_back(it.residual / it.force_scale);
+  };
+  const auto result = solver::solve_static(*run.objective, options, {.characteristic_length = 1.0, .reference_force = 1.0}, callbacks);
+  ASSERT_TRUE(result.success) << result.message;
+  ASSERT_GE(residuals.size(), 4u);
+  // Once in the quadratic regime, r_{k+1} <= C r_k^2: check the last ratios that are above round-off.
+  int quadratic_steps = 0;
+  for (std::size_t k = 1; k < residuals.size(); ++k) {
+    if (residuals[k - 1] < 1e-2 && residuals[k] > 1e-13) {
+      EXPECT_LT(residuals[k], 10 * residuals[k - 1] * residuals[k - 1]) << "iteration " << k;
+      ++quadratic_steps;
+    }
+  }
+  EXPECT_GE(quadratic_steps, 1);
+}
+
+class LinearSolverKinds : public ::testing::TestWithParam<solver::LinearSolverOptions::Kind> {};
+
+TEST_P(LinearSolverKinds, GravitySagOfAClampedBarAgrees) {
+  auto p = st::box_problem(8, 2, 2, Vector3(0, 0, 0), Vector3(4, 1, 1), st::mooney_rivlin(10, 2, 50), 1.0);
+  p.gravity = Vector3(0, 0, -1);
+  p.prescribed.push_back({"clamp", st::nodes_on_plane(p.mesh, 0, 0.0), fem::RigidMotion{}});
+  SolverRig run(std::move(p));
+  solver::StaticSolverOptions options;
+  options.linear.kind = GetParam();
+  options.linear.tolerance = GetParam() == solver::LinearSolverOptions::Kind::Gmres ? 0.1 : 1e-3;
+  options.linear.max_iterations = 300;
+  options.stepping.increments = 2;
+  options.newton.max_iterations = 200;
+  options.newton.residual_tolerance = 1e-8;
+  const auto result = solver::solve_static(*run.objective, options, {.characteristic_length = 4.0, .reference_force = 16.0});
+  ASSERT_TRUE(result.success) << result.message;
+  // Tip deflection of the reference (CHOLMOD, tight tolerance) run.
+  static double reference = 0;
+  const double tip = result.last_converged.x.col(2).minCoeff();
+  if (GetParam() == solver::LinearSolverOptions::Kind::Cholmod) reference = tip;
+  EXPECT_LT(tip, -0.01);
+  if (reference != 0) {
+    EXPECT_NEAR(tip, reference, 1e-6 * std::abs(reference) + 1e-9);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(All, LinearSolverKinds,
+                         ::testing::Values(solver::LinearSolverOptions::Kind::Cholmod,
+                                           solver::LinearSolverOptions::Kind::Gmres,
+                                           solver::LinearSolverOptions::Kind::ConjugateGradient));
+
+TEST(StaticSolver, ImpossibleMotionFailsClearlyAndKeepsTheLastConvergedState) {
+  // Crush a block to zero thickness: the last increment cannot exist without inversion.
+  auto p = st::box_problem(2, 2, 2, Vector3(0, 0, 0), Vector3(1, 1, 1), st::mooney_rivlin());
+  p.prescribed.push_back({"floor", st::nodes_on_plane(p.mesh, 2, 0.0), fem::RigidMotion{}});
+  fem::RigidMotion crush;
+  crush.translation = Vector3(0, 0, -1.0);
+  p.prescribed.push_back({"press", st::nodes_on_plane(p.mesh, 2, 1.0), crush});
+  SolverRig run(std::move(p));
+  solver::StaticSolverOptions options;
+  options.stepping.increments = 4;
+  options.stepping.min_step = 1e-3;
+  const auto result = solver::solve_static(*run.objective, options, {.characteristic_length = 1.0, .reference_force = 1.0});
+  EXPECT_FALSE(result.success);
+  EXPECT_NE(result.message.find("could not be solved"), std::string::npos) << result.message;
+  EXPECT_NE(result.message.find("last converged"), std::string::npos) << result.message;
+  EXPECT_GE(result.increments_completed, 2);
+  EXPECT_LT(result.increments_completed, 4);
+  EXPECT_TRUE(run.objective->is_valid(result.last_converged));
+  EXPECT_GT(result.last_converged.lambda, 0.5);
+}
+
+TEST(StaticSolver, FreeRigidBodyHangingFromASoftBlockCarriesItsWeight) {
+  // A soft column clamped at the top with a heavy free rigid block bonded below it.
+  auto p = st::box_problem(2, 2, 6, Vector3(0, 0, 0), Vector3(1, 1, 3), st::mooney_rivlin(5, 1, 20), 1.0);
+  p.mesh.region_names = {"soft", "weight"};
+  p.region_material.push_back(nullptr);
+  p.region_density.push_back(20.0);
+  fem::RigidBody weight;
+  weight.name = "weight";
+  weight.kind = fem::RigidBody::Kind::Free;
+  for (Index t = 0; t < p.mesh.num_tets(); ++t) {
+    double cz = 0;
+    for (int i = 0; i < 4; ++i) cz += p.mesh.rest(p.mesh.tets(t, i), 2) / 4;
+    if (cz < 1.0) {
+      p.mesh.region[t] = 1;
+      weight.tets.push_back(t);
+    }
+  }
+  p.rigid_bodies.push_back(weight);
+  p.gravity = Vector3(0, 0, -1);
+  p.prescribed.push_back({"ceiling", st::nodes_on_plane(p.mesh, 2, 3.0), fem::RigidMotion{}});
+  SolverRig run(std::move(p));
+  solver::StaticSolverOptions options;
+  options.stepping.increments = 2;
+  options.newton.residual_tolerance = 1e-10;
+  const auto result =
+      solver::solve_static(*run.objective, options, {.characteristic_length = 3.0, .reference_force = 90.0});
+  ASSERT_TRUE(result.success) << result.message;
+  const auto g = run.objective->full_gradient(result.last_converged);
+  const auto reactions = fem::compute_reactions(run.problem, *run.dofs, result.last_converged, g);
+  const double total_weight = (1.0 * 2.0 + 20.0 * 1.0) * 1.0;  // soft: 2 volume units, weight: 1
+  EXPECT_NEAR(reactions[0].force.z(), total_weight, 1e-8 * total_weight);
+  EXPECT_LT(reactions[1].force.norm(), 1e-8 * total_weight);  // a free body needs no support
+  // The weight moved down.
+  const auto& pose = result.last_converged.rigid[0];
+  EXPECT_LT(pose.t.z(), -1e-3);
+  // Compare with the same weight made of a very stiff deformable material: the free rigid body
+  // must behave as its stiff limit (the tilt comes from the mesh's diagonal, the same in both).
+  auto q = st::box_problem(2, 2, 6, Vector3(0, 0, 0), Vector3(1, 1, 3), st::mooney_rivlin(5, 1, 20), 1.0);
+  q.mesh.region = run.problem.mesh.region;
+  q.mesh.region_names = {"soft", "weight"};
+  q.region_material.push_back(st::mooney_rivlin(5e3, 1e3, 2e4));  // 1000x stiffer
+  q.region_density.push_back(20.0);
+  q.gravity = Vector3(0, 0, -1);
+  q.prescribed.push_back({"ceiling", st::nodes_on_plane(q.mesh, 2, 3.0), fem::RigidMotion{}});
+  SolverRig stiff(std::move(q));
+  options.newton.residual_tolerance = 1e-9;
+  const auto stiff_result =
+      solver::solve_static(*stiff.objective, options, {.characteristic_length = 3.0, .reference_force = 90.0});
+  ASSERT_TRUE(stiff_result.success) << stiff_result.message;
+  for (Index a : run.dofs->rigid_members(0)) {
+    const double gap = (result.last_converged.x.row(a) - stiff_result.last_converged.x.row(a)).norm();
+    EXPECT_LT(gap, 1e-2 * std::abs(pose.t.z())) << "node " << a;
+  }
+}
