@@ -1,0 +1,106 @@
+#include "run_output.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "sinew/fem/reactions.hpp"
+#include "sinew/io/atomic_file.hpp"
+
+namespace sinew::app {
+
+RunOutput::RunOutput(std::string directory, const fem::Problem& problem, const StaticModel& model,
+                     const scene::OutputConfig& config)
+    : directory_(std::move(directory)), problem_(problem), model_(model), config_(config) {
+  std::vector<std::string> columns{"step", "increment", "lambda", "step_size", "newton_iterations", "residual",
+                                   "force_scale", "energy", "cuts"};
+  for (const auto& p : problem.prescribed) reaction_names_.push_back(p.name);
+  for (const auto& p : problem.planar) reaction_names_.push_back(p.name);
+  for (const auto& r : problem.rigid_bodies) reaction_names_.push_back(r.name);
+  for (const auto& name : reaction_names_)
+    for (const char* c : {"fx", "fy", "fz", "mx", "my", "mz"}) columns.push_back(name + "." + c);
+  steps_ = std::make_unique<io::CsvTable>(directory_ + "/steps.csv", columns);
+  newton_ = std::make_unique<io::CsvTable>(
+      directory_ + "/newton.csv",
+      std::vector<std::string>{"step", "lambda", "iteration", "residual", "force_scale", "energy", "step_length",
+                               "line_search_halvings", "linear_iterations", "increment", "regularization"});
+  series_ = std::make_unique<io::PvdSeries>(directory_ + "/sinew.pvd");
+}
+
+void RunOutput::write_step(const solver::StepRecord& step, const fem::State& state) {
+  std::vector<io::CsvTable::Cell> row{static_cast<long long>(step.step),
+                                      static_cast<long long>(step.increment),
+                                      step.lambda,
+                                      step.step_size,
+                                      static_cast<long long>(step.newton_iterations),
+                                      step.residual,
+                                      step.force_scale,
+                                      step.energy,
+                                      static_cast<long long>(step.cuts)};
+  const auto gradient = model_.objective->full_gradient(state);
+  for (const auto& reaction : fem::compute_reactions(problem_, *model_.dofs, state, gradient)) {
+    for (int k = 0; k < 3; ++k) row.emplace_back(reaction.force[k]);
+    for (int k = 0; k < 3; ++k) row.emplace_back(reaction.moment[k]);
+  }
+  steps_->add_row(row);
+  newton_->flush();
+}
+
+void RunOutput::write_iteration(const solver::StepRecord& step, const solver::IterationRecord& it) {
+  newton_->append({static_cast<long long>(step.step), step.lambda, static_cast<long long>(it.iteration), it.residual,
+                   it.force_scale, it.energy, it.step_length, static_cast<long long>(it.line_search_steps),
+                   static_cast<long long>(it.linear_iterations), it.increment, it.regularization});
+}
+
+io::VtuData RunOutput::vtu_data(const fem::State& state) const {
+  io::VtuData data;
+  data.points = state.x;
+  data.tets = problem_.mesh.tets;
+  data.point_fields.push_back({"displacement", MatrixX(state.x - problem_.mesh.rest)});
+  const auto measures =
+      fem::compute_tet_measures(state.x, problem_.mesh.tets, model_.tet_material, model_.elastic->rest_shapes());
+  data.cell_fields.push_back({"J", MatrixX(measures.J)});
+  data.cell_fields.push_back({"von_mises_stress", MatrixX(measures.von_mises)});
+  data.int_cell_fields.emplace_back("region", problem_.mesh.region);
+  IndexVector rigid(problem_.mesh.num_tets());
+  for (Index t = 0; t < problem_.mesh.num_tets(); ++t) rigid[t] = model_.tet_material[t] ? 0 : 1;
+  data.int_cell_fields.emplace_back("rigid", rigid);
+  return data;
+}
+
+void RunOutput::write_state(const std::string& file_name, const fem::State& state) {
+  io::write_vtu(directory_ + "/" + file_name, vtu_data(state));
+}
+
+void RunOutput::write_increment(int increment, int increments, const fem::State& state) {
+  if (!config_.vtu) return;
+  const int every = std::max(1, config_.every);
+  if (increment % every != 0 && increment != increments) return;
+  const std::string name = fmt::format("vtu/increment_{:04d}.vtu", increment);
+  write_state(name, state);
+  series_->add(state.lambda, name);
+}
+
+void RunOutput::write_summary(const solver::StaticResult& result, double wall_seconds, const std::string& scene_name) {
+  nlohmann::json j;
+  j["scene"] = scene_name;
+  j["success"] = result.success;
+  j["message"] = result.message;
+  j["lambda_reached"] = result.last_converged.lambda;
+  j["increments_completed"] = result.increments_completed;
+  j["steps"] = result.steps;
+  j["newton_iterations"] = result.newton_iterations;
+  j["step_cuts"] = result.cuts;
+  j["nodes"] = problem_.mesh.num_nodes();
+  j["tets"] = problem_.mesh.num_tets();
+  j["dofs"] = model_.dofs->num_dofs();
+  j["wall_seconds"] = wall_seconds;
+  j["seconds"] = {{"forces_and_stiffness", result.times.forces_and_stiffness},
+                  {"linear_solve", result.times.linear_solve},
+                  {"line_search", result.times.line_search},
+                  {"other", std::max(0.0, wall_seconds - result.times.total())}};
+  io::write_file_atomically(directory_ + "/summary.json", j.dump(2) + "\n");
+}
+
+}  // namespace sinew::app

@@ -1,0 +1,51 @@
+#pragma once
+/// @file run_output.hpp
+/// What a static run writes into its output directory, every file atomically:
+///   sinew.pvd              ParaView series of the increments
+///   vtu/increment_NNNN.vtu displacement, region, J, von Mises stress per increment
+///   steps.csv              one row per accepted load step (lambda, Newton iterations, residual,
+///                          energy, reaction force and moment of every constraint)
+///   newton.csv             one row per Newton iteration
+///   last_converged.vtu     on failure: the state the run could reach
+///   summary.json           status, message, counts, time per phase
+
+#include <memory>
+#include <string>
+
+#include "sinew/fem/problem.hpp"
+#include "sinew/io/csv.hpp"
+#include "sinew/io/vtu.hpp"
+#include "sinew/scene/scene_config.hpp"
+#include "sinew/solver/static_solver.hpp"
+#include "static_model.hpp"
+
+namespace sinew::app {
+
+class RunOutput {
+ public:
+  /// Creates nothing on disk until the first write.
+  RunOutput(std::string directory, const fem::Problem& problem, const StaticModel& model,
+            const scene::OutputConfig& config);
+
+  void write_step(const solver::StepRecord& step, const fem::State& state);
+  void write_iteration(const solver::StepRecord& step, const solver::IterationRecord& iteration);
+  /// VTU of increment k (if due per `every`), added to the .pvd series.
+  void write_increment(int increment, int increments, const fem::State& state);
+  void write_state(const std::string& file_name, const fem::State& state);
+  void write_summary(const solver::StaticResult& result, double wall_seconds, const std::string& scene_name);
+
+  const std::string& directory() const { return directory_; }
+
+ private:
+  io::VtuData vtu_data(const fem::State& state) const;
+  std::string directory_;
+  const fem::Problem& problem_;
+  const StaticModel& model_;
+  scene::OutputConfig config_;
+  std::unique_ptr<io::CsvTable> steps_;
+  std::unique_ptr<io::CsvTable> newton_;
+  std::unique_ptr<io::PvdSeries> series_;
+  std::vector<std::string> reaction_names_;
+};
+
+}  // namespace sinew::app

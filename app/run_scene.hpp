@@ -1,0 +1,29 @@
+#pragma once
+/// @file run_scene.hpp
+/// `sinew run`: load and check a scene, build the problem, solve, write the outputs.
+
+#include <string>
+
+#include "sinew/scene/scene_config.hpp"
+#include "sinew/solver/static_solver.hpp"
+
+namespace sinew::app {
+
+struct RunOptions {
+  std::string output_directory = "out";
+  bool progress_bar = true;  ///< drawn only when stderr is a terminal
+  bool log_steps = true;     ///< one log line per accepted load step
+};
+
+struct RunReport {
+  bool success = false;
+  std::string message;
+  double wall_seconds = 0;
+  solver::StaticResult result;
+};
+
+/// Builds and solves the scene. Input errors (InputError) propagate before anything is
+/// written; a solve that fails returns success = false after writing the last converged state.
+RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options);
+
+}  // namespace sinew::app
