@@ -1,0 +1,645 @@
+/// @file scene_schema.cpp
+/// The scene schema: every key of a scene file, its type, default, range and meaning.
+
+#include "sinew/scene/scene_schema.hpp"
+
+#include <sstream>
+
+#include "sinew/fem/motion.hpp"
+#include "sinew/material/material_spec.hpp"
+#include "sinew/mesh/generate.hpp"
+#include "sinew/scene/scene_config.hpp"
+
+namespace sinew::scene {
+
+using nlohmann::json;
+
+const char* predictor_name(solver::LoadSteppingOptions::Predictor predictor) {
+  switch (predictor) {
+    case solver::LoadSteppingOptions::Predictor::None: return "none";
+    case solver::LoadSteppingOptions::Predictor::TwoPoint: return "two-point";
+    case solver::LoadSteppingOptions::Predictor::Tangent: return "tangent";
+  }
+  return "?";
+}
+
+const char* line_search_name(solver::NewtonOptions::LineSearchRule rule) {
+  switch (rule) {
+    case solver::NewtonOptions::LineSearchRule::Energy: return "energy";
+    case solver::NewtonOptions::LineSearchRule::Residual: return "residual";
+  }
+  return "?";
+}
+
+const char* linear_solver_name(solver::LinearSolverOptions::Kind kind) {
+  switch (kind) {
+    case solver::LinearSolverOptions::Kind::Cholmod: return "cholmod";
+    case solver::LinearSolverOptions::Kind::Gmres: return "gmres";
+    case solver::LinearSolverOptions::Kind::ConjugateGradient: return "cg";
+  }
+  return "?";
+}
+
+namespace {
+
+// ---------------------------------------------------------------- builders
+// Small fluent helpers so the schema below reads like the reference it produces.
+
+struct Key {
+  SchemaNode node;
+
+  Key(SchemaType type, std::string key, std::string doc) {
+    node.type = type;
+    node.key = std::move(key);
+    node.doc = std::move(doc);
+  }
+  Key& required() {
+    node.required = true;
+    return *this;
+  }
+  Key& fallback(json value) {
+    node.default_value = std::move(value);
+    return *this;
+  }
+  Key& min(double value, bool exclusive = false) {
+    node.minimum = SchemaBound{value, exclusive};
+    return *this;
+  }
+  Key& max(double value, bool exclusive = false) {
+    node.maximum = SchemaBound{value, exclusive};
+    return *this;
+  }
+  Key& above(double value) { return min(value, true); }
+  Key& below(double value) { return max(value, true); }
+  Key& allowed(std::vector<json> values) {
+    node.allowed = std::move(values);
+    return *this;
+  }
+  Key& non_empty() {
+    node.non_empty = true;
+    return *this;
+  }
+  Key& nonzero() {
+    node.nonzero = true;
+    return *this;
+  }
+  Key& items(std::size_t min_count, std::size_t max_count = std::numeric_limits<std::size_t>::max()) {
+    node.min_items = min_count;
+    node.max_items = max_count;
+    return *this;
+  }
+  operator SchemaNode() const { return node; }  // NOLINT(google-explicit-constructor)
+};
+
+Key number(std::string key, std::string doc) { return Key(SchemaType::Number, std::move(key), std::move(doc)); }
+Key integer(std::string key, std::string doc) { return Key(SchemaType::Integer, std::move(key), std::move(doc)); }
+Key string(std::string key, std::string doc) { return Key(SchemaType::String, std::move(key), std::move(doc)); }
+Key boolean(std::string key, std::string doc) { return Key(SchemaType::Boolean, std::move(key), std::move(doc)); }
+Key vec3(std::string key, std::string doc) { return Key(SchemaType::Vec3, std::move(key), std::move(doc)); }
+
+Key object(std::string key, std::string doc, std::vector<SchemaNode> properties) {
+  Key k(SchemaType::Object, std::move(key), std::move(doc));
+  k.node.properties = std::move(properties);
+  return k;
+}
+
+Key one_of(std::string key, std::string doc, std::vector<SchemaNode> properties, std::vector<std::string> alternatives) {
+  Key k(SchemaType::OneOf, std::move(key), std::move(doc));
+  k.node.properties = std::move(properties);
+  k.node.one_of = std::move(alternatives);
+  return k;
+}
+
+Key array(std::string key, std::string doc, SchemaNode element) {
+  Key k(SchemaType::Array, std::move(key), std::move(doc));
+  k.node.items = {std::move(element)};
+  return k;
+}
+
+Key map(std::string key, std::string doc, SchemaNode value) {
+  Key k(SchemaType::Map, std::move(key), std::move(doc));
+  k.node.items = {std::move(value)};
+  return k;
+}
+
+Key either(std::string key, std::string doc, std::vector<SchemaNode> alternatives) {
+  Key k(SchemaType::Either, std::move(key), std::move(doc));
+  k.node.items = std::move(alternatives);
+  return k;
+}
+
+Key ref(std::string key, std::string doc, std::string definition) {
+  Key k(SchemaType::Ref, std::move(key), std::move(doc));
+  k.node.ref = std::move(definition);
+  return k;
+}
+
+json vec3_json(const Vector3& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+// ---------------------------------------------------------------- definitions
+
+SchemaNode amplitude_definition() {
+  SchemaNode pair = array("", "[lambda, factor]", number("", "lambda or factor")).items(2, 2);
+  return array("", "Piecewise-linear factor through [lambda, factor] points, lambda strictly increasing, held "
+                   "constant outside them; when omitted the factor ramps as a(lambda) = lambda",
+               pair)
+      .items(1);
+}
+
+SchemaNode motion_definition() {
+  const fem::RigidMotion defaults;
+  return object("",
+                "A rigid motion reached at the end of the load (lambda = 1), scaled by its amplitude: "
+                "x = R(a angle) (X - point) + point + a translation",
+                {
+                    vec3("translation", "final translation (length)").fallback(vec3_json(defaults.translation)),
+                    object("rotation", "final rotation about an axis through a point (none when omitted)",
+                           {
+                               vec3("axis", "rotation axis direction, normalized on use").required().nonzero(),
+                               vec3("point", "a point on the axis (length)").fallback(vec3_json(defaults.axis_point)),
+                               number("angle_deg", "final angle (degrees, right-hand rule)").required(),
+                           }),
+                    ref("amplitude", "factor a(lambda) applied to angle and translation", "amplitude"),
+                });
+}
+
+SchemaNode node_selector_definition() {
+  const NodeSelector defaults;
+  return one_of(
+      "", "Chooses nodes of one body by rest position (after the body's transform), set or region",
+      {
+          string("body", "body name; may be omitted when the scene has exactly one body").non_empty(),
+          string("set", "a node set of the mesh, or the nodes of the face set of that name").non_empty(),
+          string("region", "the nodes of the tets of this mesh region").non_empty(),
+          object("box", "nodes with min - padding <= X <= max + padding, componentwise",
+                 {
+                     vec3("min", "lower corner (length)").required(),
+                     vec3("max", "upper corner (length)").required(),
+                     number("padding", "tolerance added on every side (length)").min(0).fallback(defaults.tolerance),
+                 }),
+          object("plane", "nodes with |n . (X - point)| <= tolerance",
+                 {
+                     vec3("point", "a point of the plane (length)").required(),
+                     vec3("normal", "plane normal n, normalized on use").required().nonzero(),
+                     number("tolerance", "distance tolerance (length)").min(0).fallback(defaults.tolerance),
+                 }),
+          boolean("all", "every node of the body").allowed({true}),
+      },
+      {"set", "region", "box", "plane", "all"});
+}
+
+SchemaNode shape_definition() {
+  return one_of("", "A solid for mesh generation: a primitive or a boolean combination",
+                {
+                    object("box", "axis-aligned box",
+                           {
+                               vec3("min", "lower corner (length)").required(),
+                               vec3("max", "upper corner, > min componentwise (length)").required(),
+                           }),
+                    object("sphere", "ball",
+                           {
+                               vec3("center", "center (length)").required(),
+                               number("radius", "radius (length)").required().above(0),
+                           }),
+                    object("cylinder", "solid cylinder",
+                           {
+                               vec3("base", "center of the base disk (length)").required(),
+                               vec3("axis", "from the base center to the top center; its length is the height (length)")
+                                   .required()
+                                   .nonzero(),
+                               number("radius", "radius (length)").required().above(0),
+                           }),
+                    array("union", "all shapes fused", ref("", "", "shape")).items(1),
+                    array("difference", "the first shape minus all the others", ref("", "", "shape")).items(2),
+                },
+                {"box", "sphere", "cylinder", "union", "difference"});
+}
+
+// ---------------------------------------------------------------- top-level parts
+
+SchemaNode material_schema() {
+  const material::MooneyRivlinParams mooney_rivlin;
+  const material::FiberParams fiber;
+  Key m = object("", "A hyperelastic law (GUIDE.md section 1); stresses in the scene's stress unit",
+                 {
+                     string("law", "the strain-energy function")
+                         .required()
+                         .allowed({"mooney-rivlin", "veronda-westmann", "neo-hookean"}),
+                     object("fiber",
+                            "fiber reinforcement added to the law: psi_f = alpha exp(beta (lambda^2 - 1)) - alpha beta "
+                            "lambda^2 + const, lambda^2 = d . C d",
+                            {
+                                number("alpha", "fiber stiffness (stress)").required().min(0),
+                                number("beta", "fiber exponent (dimensionless)").required().above(0),
+                                vec3("direction", "rest fiber direction d (normalized on use); regions may override it")
+                                    .nonzero()
+                                    .fallback(vec3_json(fiber.direction)),
+                            }),
+                 });
+  m.node.tag_key = "law";
+  m.node.variants = {
+      {"mooney-rivlin",
+       "psi = C1 (I1-3) + C2 (I2-3) + a (I3-1) - (C1 + 2 C2 + a) ln I3",
+       {
+           number("C1", "first Mooney-Rivlin constant (stress)").required().above(0),
+           number("C2", "second Mooney-Rivlin constant (stress)").min(0).fallback(mooney_rivlin.C2),
+           number("a", "compressibility (stress)").required().above(0),
+       }},
+      {"veronda-westmann",
+       "psi = alpha (exp(beta (I1-3)) - 1) - (alpha beta / 2)(I2-3) + a (I3-1) - a ln I3",
+       {
+           number("alpha", "stiffness (stress)").required().above(0),
+           number("beta", "exponent (dimensionless)").required().above(0),
+           number("a", "compressibility (stress)").required().above(0),
+       }},
+      {"neo-hookean",
+       "psi = mu/2 (I1-3) - mu ln J + lambda/2 (ln J)^2",
+       {
+           number("mu", "shear modulus (stress)").required().above(0),
+           number("lambda", "first Lame parameter (stress)").required().min(0),
+       }},
+  };
+  return m;
+}
+
+SchemaNode body_schema() {
+  const MeshSourceConfig mesh_defaults;
+  const mesh::GenerateOptions generate_defaults;
+  const RegionConfig region_defaults;
+  return object(
+      "", "A solid body: its mesh, placement and what each mesh region is made of",
+      {
+          string("name", "unique body name; regions and sets are called \"<body>/<name>\" in outputs")
+              .required()
+              .non_empty(),
+          one_of("mesh", "where the tetrahedral mesh comes from",
+                 {
+                     string("file", "Gmsh .msh file (format 2 or 4); relative paths start at the scene file's directory")
+                         .non_empty(),
+                     object("generate", "mesh primitive solids with Gmsh (OpenCASCADE)",
+                            {
+                                number("element_size", "target tet edge length (length)").required().above(0),
+                                integer("optimize_passes", "Gmsh tet optimization passes")
+                                    .min(0)
+                                    .max(100)
+                                    .fallback(generate_defaults.optimize_passes),
+                                array("parts",
+                                      "named solids, each a region; fragmented into one conforming mesh (where they "
+                                      "overlap, the first listed wins); each part's boundary is also the face set "
+                                      "\"<region>.surface\"",
+                                      object("", "a named solid",
+                                             {
+                                                 string("region", "region name of this part").required().non_empty(),
+                                                 ref("shape", "its solid", "shape").required(),
+                                             }))
+                                    .required()
+                                    .items(1),
+                            }),
+                 },
+                 {"file", "generate"})
+              .required(),
+          object("transform", "rigid placement of the mesh: rotate about the origin, then translate",
+                 {
+                     vec3("translate", "translation (length)").fallback(vec3_json(mesh_defaults.translate)),
+                     object("rotate", "rotation about an axis through the origin",
+                            {
+                                vec3("axis", "rotation axis").nonzero().fallback(vec3_json(mesh_defaults.rotate_axis)),
+                                number("angle_deg", "angle (degrees, right-hand rule)").fallback(mesh_defaults.rotate_angle),
+                            })
+                         .fallback(json::object()),
+                 })
+              .fallback(json::object()),
+          map("regions",
+              "mesh region name -> what it is made of; the entry \"*\" applies to every mesh region without its own "
+              "entry",
+              object("", "a deformable region (\"material\") or a rigid one (\"rigid\")",
+                     {
+                         string("material", "name of a material (a key of \"materials\"); omit for rigid regions")
+                             .non_empty(),
+                         either("rigid",
+                                "the region moves as one rigid body: \"fixed\" (stays in place), \"free\" (moved by "
+                                "contact and loads) or {\"prescribed\": motion}",
+                                {
+                                    string("", "fixed or free").allowed({"fixed", "free"}),
+                                    one_of("", "a prescribed rigid motion",
+                                           {ref("prescribed", "the motion", "motion")}, {"prescribed"}),
+                                }),
+                         number("density", "mass per rest volume (mass / length^3)")
+                             .min(0)
+                             .fallback(region_defaults.density),
+                         vec3("fiber_direction", "overrides the material's fiber direction in this region").nonzero(),
+                     }))
+              .required()
+              .items(1),
+      });
+}
+
+SchemaNode boundary_condition_schema() {
+  const BoundaryConditionConfig defaults;
+  Key bc = object("", "Constrains the motion of nodes",
+                  {
+                      string("name", "unique name, used in logs and reaction-force outputs").required().non_empty(),
+                      string("type", "kind of constraint").required().allowed({"fixed", "prescribed", "planar"}),
+                      ref("nodes", "the constrained nodes", "node_selector").required(),
+                  });
+  bc.node.tag_key = "type";
+  bc.node.variants = {
+      {"fixed", "the nodes stay at their rest positions", {}},
+      {"prescribed", "the nodes follow a rigid motion", {ref("motion", "the prescribed motion", "motion").required()}},
+      {"planar",
+       "the nodes move only in a plane: n . (x - X) = displacement * amplitude(lambda)",
+       {
+           vec3("normal", "plane normal n, normalized on use").required().nonzero(),
+           number("displacement", "final displacement along n (length)").fallback(defaults.displacement),
+           ref("amplitude", "factor applied to the displacement", "amplitude"),
+       }},
+  };
+  return bc;
+}
+
+SchemaNode loads_schema() {
+  const LoadsConfig defaults;
+  return object("loads", "external loads",
+                {
+                    vec3("gravity", "gravitational acceleration (length / time^2)").fallback(vec3_json(defaults.gravity)),
+                    array("forces", "forces spread equally over node sets",
+                          object("", "a force",
+                                 {
+                                     string("name", "name, used in logs").required().non_empty(),
+                                     ref("nodes", "the loaded nodes", "node_selector").required(),
+                                     vec3("total_force", "total force over all selected nodes (force)").required(),
+                                     ref("amplitude", "factor applied to the force", "amplitude"),
+                                 }))
+                        .fallback(json::array()),
+                })
+      .fallback(json::object());
+}
+
+SchemaNode solver_schema() {
+  const solver::StaticSolverOptions defaults;
+  const auto& stepping = defaults.stepping;
+  const auto& newton = defaults.newton;
+  const auto& linear = defaults.linear;
+  using Predictor = solver::LoadSteppingOptions::Predictor;
+  using Rule = solver::NewtonOptions::LineSearchRule;
+  using Kind = solver::LinearSolverOptions::Kind;
+  return object(
+             "solver", "static solver: adaptive load stepping, Newton, line search, linear solver",
+             {
+                 integer("increments", "load increments (an output after each)").min(1).fallback(stepping.increments),
+                 string("predictor", "initial guess of each step")
+                     .allowed({predictor_name(Predictor::None), predictor_name(Predictor::TwoPoint),
+                               predictor_name(Predictor::Tangent)})
+                     .fallback(predictor_name(stepping.predictor)),
+                 number("min_step", "smallest load step when halving, as a fraction of an increment")
+                     .above(0)
+                     .max(1)
+                     .fallback(stepping.min_step),
+                 number("growth", "step growth factor after an easy step").min(1).fallback(stepping.growth),
+                 integer("easy_iterations", "Newton iterations at or below which a step counts as easy")
+                     .min(0)
+                     .fallback(stepping.easy_iterations),
+                 object("newton", "Newton iterations of one load step",
+                        {
+                            integer("max_iterations", "iterations before the step fails and is halved")
+                                .min(1)
+                                .fallback(newton.max_iterations),
+                            number("residual_tolerance", "converged when |residual| <= this * force scale")
+                                .above(0)
+                                .fallback(newton.residual_tolerance),
+                            number("increment_tolerance",
+                                   "... and the largest node displacement of the last iteration <= this * bounding-box "
+                                   "diagonal")
+                                .above(0)
+                                .fallback(newton.increment_tolerance),
+                            string("line_search", "accept a step when the energy decreases, or when the residual does")
+                                .allowed({line_search_name(Rule::Energy), line_search_name(Rule::Residual)})
+                                .fallback(line_search_name(newton.line_search)),
+                            integer("max_line_search_steps", "step halvings before the iteration fails")
+                                .min(0)
+                                .fallback(newton.max_line_search_steps),
+                            number("quasi_viscosity",
+                                   "K + D/dt with D_a = this * (volume around node a)^(1/3) (stress * length); 0 = off")
+                                .min(0)
+                                .fallback(newton.quasi_viscosity),
+                            boolean("project_hessians",
+                                    "project each element's dP/dF onto the positive semi-definite cone")
+                                .fallback(newton.project_element_hessians),
+                        })
+                     .fallback(json::object()),
+                 object("linear", "linear solver of each Newton iteration",
+                        {
+                            string("solver", "sparse Cholesky (CHOLMOD), GMRES or conjugate gradients")
+                                .allowed({linear_solver_name(Kind::Cholmod), linear_solver_name(Kind::Gmres),
+                                          linear_solver_name(Kind::ConjugateGradient)})
+                                .fallback(linear_solver_name(linear.kind)),
+                            number("tolerance", "relative residual at which iterative solvers stop")
+                                .above(0)
+                                .below(1)
+                                .fallback(linear.tolerance),
+                            integer("max_iterations", "iterative solvers' iteration limit")
+                                .min(1)
+                                .fallback(linear.max_iterations),
+                            integer("gmres_restart", "GMRES restart length").min(1).fallback(linear.gmres_restart),
+                        })
+                     .fallback(json::object()),
+             })
+      .fallback(json::object());
+}
+
+SchemaNode output_schema() {
+  const OutputConfig defaults;
+  return object("output", "what is written",
+                {
+                    boolean("vtu", "write a .vtu per output step and a .pvd series").fallback(defaults.vtu),
+                    integer("every", "write every n-th increment (the last one always)").min(1).fallback(defaults.every),
+                })
+      .fallback(json::object());
+}
+
+Schema build_scene_schema() {
+  Schema schema;
+  schema.title = "sinew scene";
+  schema.root = object("", "A scene: materials, bodies, boundary conditions, loads, solver and output settings",
+                       {
+                           string("name", "scene name, for logs and outputs").fallback(""),
+                           string("description", "free text").fallback(""),
+                           string("units",
+                                  "the consistent unit system, e.g. \"mm, N, MPa, s\" (documentation only: sinew "
+                                  "converts nothing)")
+                               .required()
+                               .non_empty(),
+                           map("materials", "material name -> law and parameters", material_schema())
+                               .fallback(json::object()),
+                           array("bodies", "the solids", body_schema()).required().items(1),
+                           array("boundary_conditions", "constraints on nodes", boundary_condition_schema())
+                               .fallback(json::array()),
+                           loads_schema(),
+                           solver_schema(),
+                           output_schema(),
+                       });
+  schema.definitions["node_selector"] = node_selector_definition();
+  schema.definitions["motion"] = motion_definition();
+  schema.definitions["amplitude"] = amplitude_definition();
+  schema.definitions["shape"] = shape_definition();
+  return schema;
+}
+
+}  // namespace
+
+const Schema& scene_schema() {
+  static const Schema schema = build_scene_schema();
+  return schema;
+}
+
+json scene_json_schema() { return to_json_schema(scene_schema()); }
+
+const std::string& scene_example_json() {
+  static const std::string example = R"json({
+  "name": "uniaxial-mooney-rivlin",
+  "description": "A block pulled along x next to a gel ball; shows every kind of entry.",
+  "units": "mm, N, MPa, s",
+  "materials": {
+    "rubber": {"law": "mooney-rivlin", "C1": 0.5, "C2": 0.1, "a": 2.0},
+    "tendon": {"law": "veronda-westmann", "alpha": 1.0, "beta": 1.0, "a": 10,
+               "fiber": {"alpha": 1.0, "beta": 2.0, "direction": [0, 0, 1]}},
+    "gel": {"law": "neo-hookean", "mu": 1.0, "lambda": 10.0}
+  },
+  "bodies": [
+    {"name": "block",
+     "mesh": {"file": "block.msh"},
+     "transform": {"translate": [0, 0, 0], "rotate": {"axis": [0, 0, 1], "angle_deg": 0}},
+     "regions": {"*": {"material": "rubber", "density": 1e-6},
+                 "bone": {"rigid": "fixed"},
+                 "patella": {"rigid": "free", "density": 2e-6},
+                 "tibia": {"rigid": {"prescribed": {"rotation": {"axis": [1, 0, 0], "point": [0, 0, 0], "angle_deg": 90}}}},
+                 "muscle": {"material": "tendon", "fiber_direction": [0, 0, 1]}}},
+    {"name": "ball",
+     "mesh": {"generate": {"element_size": 0.25,
+              "parts": [{"region": "ball", "shape": {"sphere": {"center": [0, 0, 2], "radius": 0.5}}},
+                        {"region": "core", "shape": {"difference": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}},
+                                                                    {"cylinder": {"base": [0.5, 0.5, 0], "axis": [0, 0, 1], "radius": 0.2}}]}}]}},
+     "transform": {"translate": [0, 0, 1]},
+     "regions": {"*": {"material": "gel"}}}
+  ],
+  "boundary_conditions": [
+    {"name": "clamp", "type": "fixed", "nodes": {"body": "block", "plane": {"point": [0, 0, 0], "normal": [1, 0, 0], "tolerance": 1e-6}}},
+    {"name": "pull", "type": "prescribed", "nodes": {"body": "block", "box": {"min": [1, 0, 0], "max": [1, 1, 1], "padding": 1e-6}},
+     "motion": {"translation": [0.5, 0, 0], "rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angle_deg": 0}, "amplitude": [[0, 0], [1, 1]]}},
+    {"name": "roller", "type": "planar", "nodes": {"body": "block", "set": "bottom"}, "normal": [0, 0, 1], "displacement": 0.0}
+  ],
+  "loads": {"gravity": [0, 0, -9.81], "forces": [{"name": "push", "nodes": {"body": "ball", "region": "ball"}, "total_force": [0, 0, -1]}]},
+  "solver": {"increments": 10, "predictor": "two-point", "min_step": 1e-4, "growth": 2.0, "easy_iterations": 4,
+             "newton": {"max_iterations": 25, "residual_tolerance": 1e-6, "increment_tolerance": 1e-6,
+                        "line_search": "energy", "max_line_search_steps": 30, "quasi_viscosity": 0, "project_hessians": false},
+             "linear": {"solver": "cholmod", "tolerance": 0.1, "max_iterations": 200, "gmres_restart": 50}},
+  "output": {"vtu": true, "every": 1}
+}
+)json";
+  return example;
+}
+
+std::string scene_reference_markdown() {
+  std::ostringstream out;
+  out << R"md(# Scene file reference
+
+<!-- Generated by sinew::scene::scene_reference_markdown() (`sinew schema --markdown`); do not edit. -->
+
+A scene is one JSON file that describes everything sinew solves: materials, bodies (meshes and
+what their regions are made of), boundary conditions, loads, solver settings and outputs. It is
+validated strictly when loaded: every key is typed, ranged and documented below; unknown keys,
+wrong types, out-of-range values and missing required keys are all reported at once, each on its
+own line starting with the JSON path of the key, e.g.
+
+```
+bodies[0].regions.muscle.density: must be >= 0, got -1
+solver.newton.max_iteration: unknown key; did you mean "max_iterations"?
+```
+
+## Conventions
+
+- **Units**: any consistent set, stated in `units` (e.g. `"mm, N, MPa, s"`); sinew converts
+  nothing. Stresses and material constants are in the stress unit, densities in mass / length^3.
+- **Angles** are given in degrees (`angle_deg`) and stored in radians.
+- **vec3** is an array of three finite numbers `[x, y, z]`. JSON cannot hold NaN or infinity;
+  strings such as `"nan"` are rejected as wrong types.
+- **Integers** may be written `4` or `4.0`, not `4.5`.
+- **Paths** of mesh files are relative to the directory of the scene file.
+- **Defaults** below are those of the solver's option structs; an omitted key takes its default.
+- **Load parameter** lambda runs from 0 to 1 over a static solve. Prescribed motions, planar
+  displacements and forces reach their given (final) values at lambda = 1, scaled by an
+  [amplitude](#def-amplitude).
+
+## Bodies, regions and names
+
+Each body has a mesh, read from a Gmsh file or generated from primitive solids, placed by its
+`transform` (rotate about the origin, then translate). All bodies are numbered together; in
+outputs a body's regions and sets are called `"<body>/<region>"` and `"<body>/<set>"`.
+
+Every mesh region needs an entry in `regions`: its own, or the `"*"` entry that covers every
+region without one. An entry naming a region the mesh does not have is an error. A region is
+either deformable (`"material"`) or rigid (`"rigid"`):
+
+- `"rigid": "fixed"` – it does not move;
+- `"rigid": "free"` – it moves as one rigid body under contact and loads;
+- `"rigid": {"prescribed": motion}` – it follows a [motion](#def-motion).
+
+Nodes a rigid region shares with deformable tets bond the two. A node of a rigid region cannot
+carry a boundary condition: its motion is the rigid body's, so prescribe the rigid region.
+
+Gmsh physical groups: dimension-3 groups are regions (tets outside every group form the region
+`"default"`); dimension-2 groups are face sets and node sets; dimension-0 and 1 groups are node
+sets. Generated meshes have one region per part and a face set `"<region>.surface"` per part.
+
+## Node selectors
+
+A [node selector](#def-node-selector) chooses nodes of one body: `"body"` (optional when the
+scene has exactly one body) and exactly one of
+
+| Key | Selects |
+| --- | --- |
+| `"set": "name"` | the node set of that name, or else the nodes of the face set of that name |
+| `"region": "name"` | the nodes of the tets of that mesh region |
+| `"box": {"min": [..], "max": [..], "padding": p}` | nodes with rest position in [min - p, max + p] |
+| `"plane": {"point": [..], "normal": [..], "tolerance": t}` | nodes with rest position X such that \|n . (X - point)\| <= t |
+| `"all": true` | every node of the body |
+
+Positions are rest positions after the body's transform. A selector that matches no node is an
+error. A node prescribed by two `fixed`/`prescribed` conditions is an error; `planar` conditions
+on one node intersect (two planes leave a line).
+
+## Shapes
+
+A [shape](#def-shape) is an object with exactly one key: `box` (`min`, `max`), `sphere`
+(`center`, `radius`), `cylinder` (`base` = center of the base disk, `axis` = base-to-top vector
+whose length is the height, `radius`), `union` (array of shapes, all fused) or `difference`
+(array of shapes, the first minus all the others). Shapes nest:
+
+```json
+{"difference": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}},
+                {"cylinder": {"base": [0.5, 0.5, 0], "axis": [0, 0, 1], "radius": 0.2}}]}
+```
+
+## Motions and amplitudes
+
+A [motion](#def-motion) is `{"translation": [..], "rotation": {"axis": [..], "point": [..],
+"angle_deg": θ}, "amplitude": [[lambda, factor], ...]}`; every key is optional. At load
+parameter lambda a node at rest position X is at
+
+    x = R(a θ, axis) (X - point) + point + a translation,   a = amplitude(lambda).
+
+An [amplitude](#def-amplitude) is a list of `[lambda, factor]` points with lambda strictly
+increasing, linear in between and constant outside; omitted, it is the ramp a(lambda) = lambda.
+
+## Keys
+
+)md";
+  out << schema_markdown_tables(scene_schema());
+  out << "## Example\n\nThe mesh file `block.msh` of this example is `tests/scene/data/block.msh` in the source tree "
+         "(a unit cube of 4 x 4 x 4 cells with regions flesh, bone, patella, tibia, muscle and face sets left, "
+         "bottom); the tests parse and build this scene.\n\n```json\n"
+      << scene_example_json() << "```\n";
+  return out.str();
+}
+
+}  // namespace sinew::scene

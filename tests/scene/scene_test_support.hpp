@@ -1,0 +1,42 @@
+#pragma once
+/// @file scene_test_support.hpp
+/// Helpers shared by the scene tests: fixture paths, a minimal valid scene, error capture.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "sinew/core/error.hpp"
+#include "sinew/scene/load_scene.hpp"
+
+namespace sinew::scene::testing {
+
+inline std::string data_directory() { return std::string(SINEW_SOURCE_DIR) + "/tests/scene/data"; }
+
+/// One body (a generated unit cube of neo-Hookean gel), nothing else: every other key defaults.
+inline nlohmann::json minimal_scene() {
+  return nlohmann::json::parse(R"({
+    "units": "m, N, Pa, s",
+    "materials": {"gel": {"law": "neo-hookean", "mu": 1.0, "lambda": 10.0}},
+    "bodies": [{"name": "cube",
+                "mesh": {"generate": {"element_size": 0.5,
+                                      "parts": [{"region": "cube", "shape": {"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}}]}},
+                "regions": {"*": {"material": "gel"}}}]
+  })");
+}
+
+/// The InputError message parse_scene throws for `scene`; an empty string (and a test failure)
+/// when it does not throw.
+inline std::string parse_error(const nlohmann::json& scene, const std::string& base_directory = data_directory()) {
+  try {
+    parse_scene(scene, base_directory);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "parse_scene accepted an invalid scene: " << scene.dump();
+  return "";
+}
+
+}  // namespace sinew::scene::testing
