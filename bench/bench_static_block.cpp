@@ -1,0 +1,94 @@
+/// Benchmark (issue 2): a Mooney-Rivlin block of about 10k nodes / 40k tets compressed 30 % in
+/// 10 increments. Prints the total time, Newton iterations and the split between forces and
+/// stiffness, linear solve and line search, for each predictor and for the seed's GMRES.
+/// Timings are measured here, never asserted in tests.
+
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+
+#include "sinew/scene/build_problem.hpp"
+#include "static_model.hpp"
+
+using namespace sinew;
+
+namespace {
+
+scene::SceneConfig block_scene(double element_size) {
+  scene::SceneConfig s;
+  s.name = "bench-block";
+  material::MaterialSpec rubber;
+  rubber.base = material::MooneyRivlinParams{0.4, 0.1, 2.0};
+  s.materials["rubber"] = rubber;
+  scene::BodyConfig body;
+  body.name = "block";
+  mesh::Shape box;
+  box.kind = mesh::Shape::Kind::Box;
+  box.min = Vector3(0, 0, 0);
+  box.max = Vector3(20, 20, 20);
+  body.mesh.parts.push_back({"rubber", box});
+  body.mesh.generate.element_size = element_size;
+  scene::RegionConfig region;
+  region.material = "rubber";
+  body.regions["rubber"] = region;
+  s.bodies.push_back(body);
+  scene::BoundaryConditionConfig bottom;
+  bottom.name = "bottom";
+  bottom.kind = scene::BoundaryConditionConfig::Kind::Fixed;
+  bottom.nodes.kind = scene::NodeSelector::Kind::Plane;
+  bottom.nodes.body = "block";
+  bottom.nodes.point = Vector3(0, 0, 0);
+  bottom.nodes.normal = Vector3::UnitZ();
+  bottom.nodes.tolerance = 1e-6;
+  s.boundary_conditions.push_back(bottom);
+  scene::BoundaryConditionConfig top = bottom;
+  top.name = "top";
+  top.kind = scene::BoundaryConditionConfig::Kind::Prescribed;
+  top.nodes.point = Vector3(0, 0, 20);
+  top.motion.translation = Vector3(0, 0, -6);
+  s.boundary_conditions.push_back(top);
+  s.solver.stepping.increments = 10;
+  return s;
+}
+
+void BM_CompressBlock(benchmark::State& state, solver::LoadSteppingOptions::Predictor predictor,
+                      solver::LinearSolverOptions::Kind linear) {
+  scene::SceneConfig scene = block_scene(1.05);
+  scene.solver.stepping.predictor = predictor;
+  scene.solver.linear.kind = linear;
+  if (linear != solver::LinearSolverOptions::Kind::Cholmod) {
+    scene.solver.linear.max_iterations = 500;
+    scene.solver.newton.max_iterations = 200;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const fem::Problem problem = scene::build_problem(scene);
+  const double mesh_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (auto _ : state) {
+    const app::StaticModel model = app::make_static_model(problem, scene.solver);
+    const auto start = std::chrono::steady_clock::now();
+    const auto result = solver::solve_static(*model.objective, scene.solver, model.setup);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    state.SetIterationTime(seconds);
+    if (!result.success) state.SkipWithError(result.message.c_str());
+    const auto& t = result.times;
+    state.counters["nodes"] = problem.mesh.num_nodes();
+    state.counters["tets"] = problem.mesh.num_tets();
+    state.counters["newton_its"] = result.newton_iterations;
+    state.counters["steps"] = result.steps;
+    state.counters["solve_s"] = seconds;
+    state.counters["forces_stiffness_s"] = t.forces_and_stiffness;
+    state.counters["linear_solve_s"] = t.linear_solve;
+    state.counters["line_search_s"] = t.line_search;
+    state.counters["other_s"] = std::max(0.0, seconds - t.total());
+    state.counters["mesh_s"] = mesh_seconds;
+  }
+}
+
+using P = solver::LoadSteppingOptions::Predictor;
+using L = solver::LinearSolverOptions::Kind;
+BENCHMARK_CAPTURE(BM_CompressBlock, tangent_cholmod, P::Tangent, L::Cholmod)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_CompressBlock, two_point_cholmod, P::TwoPoint, L::Cholmod)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
