@@ -1,0 +1,247 @@
+#include "sinew/mesh/gmsh_model.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "sinew/core/error.hpp"
+#include "sinew/mesh/key_groups.hpp"
+
+namespace sinew::mesh {
+
+namespace {
+
+constexpr int kGmshTriangle = 2;
+
+/// Gmsh node tag -> position in the node arrays; dense when the tags are, hashed otherwise.
+class NodeTagMap {
+ public:
+  explicit NodeTagMap(const std::vector<std::size_t>& tags) {
+    const std::size_t max_tag = tags.empty() ? 0 : *std::max_element(tags.begin(), tags.end());
+    if (max_tag <= 2 * tags.size() + 1024) {
+      dense_.assign(max_tag + 1, -1);
+      for (std::size_t i = 0; i < tags.size(); ++i) dense_[tags[i]] = static_cast<Index>(i);
+    } else {
+      sparse_.reserve(tags.size());
+      for (std::size_t i = 0; i < tags.size(); ++i) sparse_[tags[i]] = static_cast<Index>(i);
+    }
+  }
+  /// Position of `tag`, -1 when Gmsh has no such node.
+  Index position(std::size_t tag) const {
+    if (!dense_.empty() || sparse_.empty()) return tag < dense_.size() ? dense_[tag] : -1;
+    const auto found = sparse_.find(tag);
+    return found == sparse_.end() ? -1 : found->second;
+  }
+
+ private:
+  std::vector<Index> dense_;
+  std::unordered_map<std::size_t, Index> sparse_;
+};
+
+std::string physical_group_name(int dim, int tag) {
+  std::string name;
+  gmsh::model::getPhysicalName(dim, tag, name);
+  return name.empty() ? "group_" + std::to_string(tag) : name;
+}
+
+/// Index of `name` in `names`, appended when absent.
+Index find_or_append(std::vector<std::string>& names, const std::string& name) {
+  const auto found = std::find(names.begin(), names.end(), name);
+  if (found != names.end()) return static_cast<Index>(found - names.begin());
+  names.push_back(name);
+  return static_cast<Index>(names.size()) - 1;
+}
+
+Triangles append_rows(const Triangles& top, const Triangles& bottom) {
+  Triangles stacked(top.rows() + bottom.rows(), 3);
+  stacked << top, bottom;
+  return stacked;
+}
+
+}  // namespace
+
+Triangles orient_like_boundary(const Tets& tets, const Triangles& triangles) {
+  const Triangles boundary = boundary_triangles(tets);
+  const auto num_boundary = static_cast<Index>(boundary.rows());
+  std::vector<std::array<Index, 3>> keys;
+  keys.reserve(static_cast<std::size_t>(boundary.rows() + triangles.rows()));
+  for (const Triangles* source : {&boundary, &triangles}) {
+    for (Index f = 0; f < source->rows(); ++f) {
+      std::array<Index, 3> key = {(*source)(f, 0), (*source)(f, 1), (*source)(f, 2)};
+      std::sort(key.begin(), key.end());
+      keys.push_back(key);
+    }
+  }
+  Index num_values = node_count_bound(tets);
+  if (triangles.size()) num_values = std::max(num_values, triangles.maxCoeff() + 1);
+  const KeyGroups groups = group_equal_keys<3>(keys, num_values);
+
+  Triangles oriented = triangles;
+  for (Index g = 0; g < groups.num_groups(); ++g) {
+    const Index first = groups.order[groups.offsets[g]];  // groups are ascending
+    if (first >= num_boundary) continue;                  // not on the boundary
+    for (Index i = groups.offsets[g] + 1; i < groups.offsets[g + 1]; ++i) {
+      oriented.row(groups.order[i] - num_boundary) = boundary.row(first);
+    }
+  }
+  return oriented;
+}
+
+TetMesh tet_mesh_from_gmsh_model() {
+  std::vector<std::size_t> node_tags;
+  std::vector<double> node_coordinates;
+  std::vector<double> unused_parametric;
+  gmsh::model::mesh::getNodes(node_tags, node_coordinates, unused_parametric, -1, -1,
+                              /*includeBoundary=*/false, /*returnParametricCoord=*/false);
+  const NodeTagMap node_position(node_tags);
+
+  // Regions: dimension-3 physical groups by ascending tag.
+  TetMesh mesh;
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, 3);
+  std::sort(groups.begin(), groups.end());
+  std::unordered_map<int, Index> region_of_group;
+  for (const auto& [dim, tag] : groups) {
+    region_of_group[tag] = find_or_append(mesh.region_names, physical_group_name(dim, tag));
+  }
+
+  // Tets of every volume, as node positions, and their regions.
+  std::vector<Index> tet_nodes;  // 4 per tet, positions in node_tags
+  std::vector<Index> tet_regions;
+  Index default_region = -1;
+  gmsh::vectorpair volumes;
+  gmsh::model::getEntities(volumes, 3);
+  for (const auto& [dim, volume] : volumes) {
+    std::vector<int> volume_groups;
+    gmsh::model::getPhysicalGroupsForEntity(dim, volume, volume_groups);
+    Index region = -1;
+    if (!volume_groups.empty()) {
+      region = region_of_group.at(*std::min_element(volume_groups.begin(), volume_groups.end()));
+    }
+    std::vector<std::size_t> element_tags;
+    std::vector<std::size_t> element_nodes;
+    gmsh::model::mesh::getElementsByType(kGmshLinearTetrahedron, element_tags, element_nodes,
+                                         volume);
+    if (element_tags.empty()) continue;
+    if (region < 0) {
+      if (default_region < 0) default_region = find_or_append(mesh.region_names, "default");
+      region = default_region;
+    }
+    for (const std::size_t tag : element_nodes) {
+      const Index position = node_position.position(tag);
+      if (position < 0) {
+        throw Error("Gmsh tetrahedron refers to node tag " + std::to_string(tag) +
+                    ", which the model does not define");
+      }
+      tet_nodes.push_back(position);
+    }
+    tet_regions.insert(tet_regions.end(), element_tags.size(), region);
+  }
+
+  // Keep the nodes used by tets, in ascending tag order.
+  std::vector<char> used(node_tags.size(), 0);
+  for (const Index position : tet_nodes) used[static_cast<std::size_t>(position)] = 1;
+  std::vector<Index> kept_positions;
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    if (used[i]) kept_positions.push_back(static_cast<Index>(i));
+  }
+  std::sort(kept_positions.begin(), kept_positions.end(),
+            [&node_tags](Index a, Index b) { return node_tags[a] < node_tags[b]; });
+  std::vector<Index> new_index(node_tags.size(), -1);
+  mesh.rest.resize(static_cast<Eigen::Index>(kept_positions.size()), 3);
+  for (std::size_t v = 0; v < kept_positions.size(); ++v) {
+    const auto position = static_cast<std::size_t>(kept_positions[v]);
+    new_index[position] = static_cast<Index>(v);
+    for (int d = 0; d < 3; ++d) {
+      mesh.rest(static_cast<Eigen::Index>(v), d) = node_coordinates[3 * position + d];
+    }
+  }
+  const auto num_tets = static_cast<Eigen::Index>(tet_regions.size());
+  mesh.tets.resize(num_tets, 4);
+  for (Eigen::Index t = 0; t < num_tets; ++t) {
+    for (int k = 0; k < 4; ++k) mesh.tets(t, k) = new_index[tet_nodes[4 * t + k]];
+  }
+  mesh.region = Eigen::Map<const IndexVector>(tet_regions.data(), num_tets);
+  orient_positively(mesh.rest, mesh.tets);
+
+  const auto mapped_node = [&](std::size_t tag) {
+    const Index position = node_position.position(tag);
+    return position < 0 ? Index{-1} : new_index[position];
+  };
+
+  // Node sets (dimensions 0-2) and face sets (dimension 2).
+  gmsh::vectorpair set_groups;
+  gmsh::model::getPhysicalGroups(set_groups);
+  std::sort(set_groups.begin(), set_groups.end());
+  for (const auto& [dim, tag] : set_groups) {
+    if (dim > 2) continue;
+    const std::string name = physical_group_name(dim, tag);
+
+    std::vector<std::size_t> group_node_tags;
+    std::vector<double> unused_coordinates;
+    gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, group_node_tags, unused_coordinates);
+    auto& nodes = mesh.node_sets[name];
+    for (const std::size_t node_tag : group_node_tags) {
+      const Index node = mapped_node(node_tag);
+      if (node >= 0) nodes.push_back(node);
+    }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+
+    if (dim != 2) continue;
+    std::vector<Index> corners;
+    std::vector<int> surfaces;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, surfaces);
+    for (const int surface : surfaces) {
+      std::vector<std::size_t> element_tags;
+      std::vector<std::size_t> element_nodes;
+      gmsh::model::mesh::getElementsByType(kGmshTriangle, element_tags, element_nodes, surface);
+      for (std::size_t f = 0; f < element_tags.size(); ++f) {
+        const std::array<Index, 3> triangle = {mapped_node(element_nodes[3 * f]),
+                                               mapped_node(element_nodes[3 * f + 1]),
+                                               mapped_node(element_nodes[3 * f + 2])};
+        if (std::all_of(triangle.begin(), triangle.end(), [](Index v) { return v >= 0; })) {
+          corners.insert(corners.end(), triangle.begin(), triangle.end());
+        }
+      }
+    }
+    const Triangles triangles = orient_like_boundary(
+        mesh.tets, Eigen::Map<const Triangles>(corners.data(),
+                                               static_cast<Eigen::Index>(corners.size() / 3), 3));
+    auto existing = mesh.face_sets.find(name);
+    if (existing == mesh.face_sets.end()) {
+      mesh.face_sets[name] = triangles;
+    } else {
+      existing->second = append_rows(existing->second, triangles);
+    }
+  }
+  return mesh;
+}
+
+std::vector<std::string> gmsh_element_type_names(int dim, const std::vector<int>& excluded_types) {
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types, dim);
+  std::vector<std::string> names;
+  for (const int type : types) {
+    if (std::find(excluded_types.begin(), excluded_types.end(), type) != excluded_types.end()) {
+      continue;
+    }
+    std::string name;
+    int dim = 0;
+    int order = 0;
+    int num_nodes = 0;
+    int num_primary_nodes = 0;
+    std::vector<double> local_coordinates;
+    gmsh::model::mesh::getElementProperties(type, name, dim, order, num_nodes, local_coordinates,
+                                            num_primary_nodes);
+    names.push_back(name);
+  }
+  return names;
+}
+
+}  // namespace sinew::mesh
