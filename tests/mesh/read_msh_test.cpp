@@ -280,5 +280,18 @@ TEST(ReadMsh, InvalidMeshFailsValidationNamingTheFile) {
               AllOf(HasSubstr("mesh \"" + path + "\""), HasSubstr("duplicate tetrahedron")));
 }
 
+TEST(ReadMsh, FoldedTetIsRejectedAsInverted) {
+  // Tets 1 and 2 share the face (1, 2, 3) but both apexes lie above it: tet 2 is inverted
+  // relative to tet 1 and the mesh overlaps itself.
+  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const std::string path = directory.file("folded.msh");
+  write_text(path,
+             "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+             "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 0.2 0.2 0.5\n$EndNodes\n"
+             "$Elements\n2\n1 4 2 0 1 1 2 3 4\n2 4 2 0 1 1 3 2 5\n$EndElements\n");
+  EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr(path), HasSubstr("inverted tetrahedra"),
+                                          HasSubstr("tets 0 and 1"), HasSubstr("folds over itself")));
+}
+
 }  // namespace
 }  // namespace sinew::mesh

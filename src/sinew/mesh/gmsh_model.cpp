@@ -65,6 +65,49 @@ Triangles append_rows(const Triangles& top, const Triangles& bottom) {
 
 }  // namespace
 
+void reject_folded_tets(const Positions& rest, const Tets& tets) {
+  // Two tets sharing a face must lie on opposite sides of it; a tet on the same side as its
+  // neighbour is inverted relative to it (the mesh folds over itself). Independent of the
+  // file's winding convention.
+  struct FaceUse {
+    std::array<Index, 3> nodes;
+    Index tet;
+    Index opposite;
+  };
+  std::vector<FaceUse> uses;
+  uses.reserve(static_cast<std::size_t>(4 * tets.rows()));
+  for (Index t = 0; t < tets.rows(); ++t)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<Index, 3> face{};
+      int k = 0;
+      for (int i = 0; i < 4; ++i)
+        if (i != skip) face[k++] = tets(t, i);
+      std::sort(face.begin(), face.end());
+      uses.push_back({face, t, tets(t, skip)});
+    }
+  std::sort(uses.begin(), uses.end(), [](const FaceUse& a, const FaceUse& b) { return a.nodes < b.nodes; });
+  std::vector<std::pair<Index, Index>> folded;
+  for (std::size_t i = 0; i + 1 < uses.size(); ++i) {
+    if (uses[i].nodes != uses[i + 1].nodes) continue;
+    if (uses[i].opposite == uses[i + 1].opposite) continue;  // duplicate tets: validate() reports them
+    const auto& f = uses[i].nodes;
+    const Eigen::Vector3d a = rest.row(f[0]).transpose();
+    const Eigen::Vector3d n = (rest.row(f[1]).transpose() - a).cross(rest.row(f[2]).transpose() - a);
+    const double s1 = n.dot(rest.row(uses[i].opposite).transpose() - a);
+    const double s2 = n.dot(rest.row(uses[i + 1].opposite).transpose() - a);
+    if (s1 * s2 > 0) folded.emplace_back(uses[i].tet, uses[i + 1].tet);
+  }
+  if (folded.empty()) return;
+  std::string first;
+  for (std::size_t i = 0; i < std::min<std::size_t>(folded.size(), 3); ++i)
+    first += (i ? "; " : "") + std::string("tets ") + std::to_string(folded[i].first) + " and " +
+             std::to_string(folded[i].second) + " (1-based " + std::to_string(folded[i].first + 1) + " and " +
+             std::to_string(folded[i].second + 1) + ")";
+  throw InputError(std::to_string(folded.size()) +
+                   " inverted tetrahedra: pairs of tets that share a face lie on the same side of it, so the mesh "
+                   "folds over itself; first: " + first + ". Fix the mesh (e.g. re-mesh it in Gmsh).");
+}
+
 Triangles orient_like_boundary(const Tets& tets, const Triangles& triangles) {
   const Triangles boundary = boundary_triangles(tets);
   const auto num_boundary = static_cast<Index>(boundary.rows());
@@ -167,6 +210,7 @@ TetMesh tet_mesh_from_gmsh_model() {
     for (int k = 0; k < 4; ++k) mesh.tets(t, k) = new_index[tet_nodes[4 * t + k]];
   }
   mesh.region = Eigen::Map<const IndexVector>(tet_regions.data(), num_tets);
+  reject_folded_tets(mesh.rest, mesh.tets);
   orient_positively(mesh.rest, mesh.tets);
 
   const auto mapped_node = [&](std::size_t tag) {

@@ -21,7 +21,13 @@ namespace sinew::mesh {
 ///   rest renumbered in ascending Gmsh node tag order;
 /// - tets are oriented positively.
 /// Returns a mesh without tets when the model has none; does not call validate().
+/// Throws InputError when a tet is inverted relative to a neighbour (see reject_folded_tets);
+/// tets merely wound the other way are flipped to positive orientation.
 TetMesh tet_mesh_from_gmsh_model();
+
+/// Throws InputError naming the first pairs of face-sharing tets that lie on the same side of
+/// their shared face (a fold: one of them is inverted).
+void reject_folded_tets(const Positions& rest, const Tets& tets);
 
 /// The names of the Gmsh element types of dimension `dim` (all dimensions when -1) present in
 /// the current model's mesh, leaving out `excluded_types` (Gmsh type numbers), e.g.

@@ -52,7 +52,12 @@ TetMesh read_msh(const std::string& path) {
                          "); sinew supports only linear tetrahedra (Gmsh element type 4): "
                          "remesh with Mesh.ElementOrder = 1 and without recombination");
       }
-      TetMesh model_mesh = tet_mesh_from_gmsh_model();
+      TetMesh model_mesh;
+      try {
+        model_mesh = tet_mesh_from_gmsh_model();
+      } catch (const InputError& e) {
+        throw InputError(context + ": " + e.what());
+      }
       if (model_mesh.num_tets() == 0) {
         const std::string found = join(gmsh_element_type_names());
         throw InputError(context + " holds no linear tetrahedra (Gmsh element type 4); it has " +

@@ -387,7 +387,7 @@ SchemaNode solver_schema() {
              "solver", "static solver: adaptive load stepping, Newton, line search, linear solver",
              {
                  integer("increments", "load increments (an output after each)").min(1).fallback(stepping.increments),
-                 string("predictor", "initial guess of each step")
+                 string("predictor", "initial guess of each step: tangent (linearized response from the last factorization), two-point (the seed's extrapolation of the last two states) or none")
                      .allowed({predictor_name(Predictor::None), predictor_name(Predictor::TwoPoint),
                                predictor_name(Predictor::Tangent)})
                      .fallback(predictor_name(stepping.predictor)),
