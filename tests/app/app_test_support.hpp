@@ -1,0 +1,145 @@
+#pragma once
+/// @file app_test_support.hpp
+/// Helpers of the command-line tests: a scratch directory per test, running the real `sinew`
+/// executable (SINEW_BINARY) with its standard output and error captured to files, and a small
+/// valid scene to break in one place per test.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace sinew::app_test {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+/// A fresh directory under the system temporary directory, unique per process, test and
+/// instance; removed (with everything in it) at destruction.
+class ScratchDirectory {
+ public:
+  ScratchDirectory() {
+    static std::atomic<int> counter{0};
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string test = info ? std::string(info->test_suite_name()) + "_" + info->name() : "none";
+    path_ = fs::temp_directory_path() /
+            ("sinew_app_" + std::to_string(::getpid()) + "_" + test + "_" + std::to_string(counter++));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~ScratchDirectory() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  ScratchDirectory(const ScratchDirectory&) = delete;
+  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
+
+  const fs::path& path() const { return path_; }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  fs::path path_;
+};
+
+inline std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open " + path.string());
+  std::ostringstream content;
+  content << in.rdbuf();
+  return content.str();
+}
+
+inline void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+/// `text` in single quotes for /bin/sh.
+inline std::string shell_quote(const std::string& text) {
+  std::string quoted = "'";
+  for (const char c : text) {
+    if (c == '\'') {
+      quoted += "'\\''";
+    } else {
+      quoted += c;
+    }
+  }
+  return quoted + "'";
+}
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;  ///< standard output
+  std::string err;  ///< standard error
+};
+
+/// Runs SINEW_BINARY with `arguments` (each quoted), standard output and error captured in
+/// files of `directory`, and returns the exit code and both texts.
+inline CommandResult run_sinew(const std::vector<std::string>& arguments, const ScratchDirectory& directory) {
+  static std::atomic<int> counter{0};
+  const int n = counter++;
+  const fs::path out_file = directory / ("stdout_" + std::to_string(n) + ".txt");
+  const fs::path err_file = directory / ("stderr_" + std::to_string(n) + ".txt");
+  std::string command = shell_quote(SINEW_BINARY);
+  for (const auto& argument : arguments) command += " " + shell_quote(argument);
+  command += " >" + shell_quote(out_file.string()) + " 2>" + shell_quote(err_file.string()) + " </dev/null";
+  const int status = std::system(command.c_str());
+  CommandResult result;
+  if (status != -1 && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  result.out = read_text(out_file);
+  result.err = read_text(err_file);
+  return result;
+}
+
+/// `sinew run <scene> -o <output> --no-progress`.
+inline CommandResult run_scene_file(const fs::path& scene, const fs::path& output, const ScratchDirectory& directory) {
+  return run_sinew({"run", scene.string(), "-o", output.string(), "--no-progress"}, directory);
+}
+
+/// A small valid scene: a 10 mm Mooney-Rivlin cube (coarse generated mesh) on a fixed bottom
+/// face, its top face pushed down 1 mm in 2 increments.
+inline json small_block_scene() {
+  return json::parse(R"({
+    "name": "small-block",
+    "units": "mm, N, MPa",
+    "materials": {"rubber": {"law": "mooney-rivlin", "C1": 0.5, "C2": 0.1, "a": 2.0}},
+    "bodies": [
+      {"name": "block",
+       "mesh": {"generate": {"element_size": 5.0,
+         "parts": [{"region": "rubber", "shape": {"box": {"min": [0, 0, 0], "max": [10, 10, 10]}}}]}},
+       "regions": {"rubber": {"material": "rubber", "density": 1e-6}}}
+    ],
+    "boundary_conditions": [
+      {"name": "bottom", "type": "fixed",
+       "nodes": {"plane": {"point": [0, 0, 0], "normal": [0, 0, 1], "tolerance": 1e-6}}},
+      {"name": "top", "type": "prescribed",
+       "nodes": {"plane": {"point": [0, 0, 10], "normal": [0, 0, 1], "tolerance": 1e-6}},
+       "motion": {"translation": [0, 0, -1]}}
+    ],
+    "solver": {"increments": 2},
+    "output": {"vtu": true, "every": 1}
+  })");
+}
+
+/// Every regular file under `directory`, recursively, relative to it.
+inline std::vector<std::string> files_under(const fs::path& directory) {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(directory)) {
+    files.push_back(fs::relative(entry.path(), directory).generic_string());
+  }
+  return files;
+}
+
+}  // namespace sinew::app_test

@@ -1,0 +1,149 @@
+/// @file test_cli_commands.cpp
+/// The `sinew` command line through the real executable: validate, schema, help, and a
+/// successful run that leaves no temporary file behind.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "app/app_test_support.hpp"
+
+namespace sinew::app_test {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+using ::testing::StartsWith;
+
+const fs::path kSource(SINEW_SOURCE_DIR);
+
+TEST(Cli, ValidateAcceptsEveryExample) {
+  ScratchDirectory directory;
+  int examples = 0;
+  for (const auto& entry : fs::directory_iterator(kSource / "examples")) {
+    if (entry.path().extension() != ".json") continue;
+    ++examples;
+    const CommandResult result = run_sinew({"validate", entry.path().string()}, directory);
+    EXPECT_EQ(result.exit_code, 0) << entry.path() << "\n" << result.err;
+    EXPECT_THAT(result.out, HasSubstr(entry.path().string() + ": valid")) << result.err;
+  }
+  EXPECT_GE(examples, 4);
+}
+
+TEST(Cli, ValidateWritesNothing) {
+  ScratchDirectory directory;
+  const fs::path scene = directory / "scene.json";
+  write_text(scene, small_block_scene().dump(2));
+  const CommandResult result = run_sinew({"validate", scene.string()}, directory);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_THAT(result.out, HasSubstr("valid"));
+  EXPECT_FALSE(fs::exists(directory / "out"));
+}
+
+TEST(Cli, RunOnAMissingSceneFileNamesIt) {
+  ScratchDirectory directory;
+  const fs::path missing = directory / "missing-scene.json";
+  const CommandResult result = run_sinew({"run", missing.string(), "-o", (directory / "out").string()}, directory);
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.err, HasSubstr(missing.string()));
+  EXPECT_FALSE(fs::exists(directory / "out"));
+}
+
+TEST(Cli, ValidateOnAMissingSceneFileNamesIt) {
+  ScratchDirectory directory;
+  const fs::path missing = directory / "missing-scene.json";
+  const CommandResult result = run_sinew({"validate", missing.string()}, directory);
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.err, HasSubstr(missing.string()));
+}
+
+TEST(Cli, HelpExitsZeroAndListsTheCommands) {
+  ScratchDirectory directory;
+  const CommandResult result = run_sinew({"--help"}, directory);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  for (const char* command : {"run", "validate", "schema"}) EXPECT_THAT(result.out, HasSubstr(command));
+}
+
+TEST(Cli, NoCommandIsAUsageError) {
+  ScratchDirectory directory;
+  const CommandResult result = run_sinew({}, directory);
+  EXPECT_NE(result.exit_code, 0);
+}
+
+TEST(Cli, SchemaMarkdownIsTheCommittedReference) {
+  ScratchDirectory directory;
+  const CommandResult result = run_sinew({"schema", "--markdown"}, directory);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  const std::string committed = read_text(kSource / "docs" / "scene-reference.md");
+  if (result.out == committed) return;
+  // Point at the first line that differs rather than printing both documents.
+  std::istringstream printed_lines(result.out), committed_lines(committed);
+  std::string printed_line, committed_line;
+  int line = 0;
+  while (true) {
+    ++line;
+    const bool has_printed = static_cast<bool>(std::getline(printed_lines, printed_line));
+    const bool has_committed = static_cast<bool>(std::getline(committed_lines, committed_line));
+    if (!has_printed && !has_committed) break;
+    if (has_printed != has_committed || printed_line != committed_line) {
+      ADD_FAILURE() << "docs/scene-reference.md differs from `sinew schema --markdown` at line " << line
+                    << ":\n  printed:   " << (has_printed ? printed_line : "(end of output)")
+                    << "\n  committed: " << (has_committed ? committed_line : "(end of file)")
+                    << "\nregenerate it with `sinew schema --markdown > docs/scene-reference.md`";
+      break;
+    }
+  }
+  EXPECT_EQ(result.out.size(), committed.size());
+}
+
+TEST(Cli, SchemaJsonIsAJsonSchema) {
+  ScratchDirectory directory;
+  const CommandResult result = run_sinew({"schema", "--json"}, directory);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  json schema;
+  ASSERT_NO_THROW(schema = json::parse(result.out));
+  ASSERT_TRUE(schema.is_object());
+  ASSERT_TRUE(schema.contains("$schema"));
+  EXPECT_THAT(schema.at("$schema").get<std::string>(), HasSubstr("json-schema.org"));
+  ASSERT_TRUE(schema.contains("properties"));
+  for (const char* key : {"units", "materials", "bodies", "boundary_conditions", "loads", "solver", "output"}) {
+    EXPECT_TRUE(schema.at("properties").contains(key)) << key;
+  }
+}
+
+TEST(Cli, SchemaToAFileWritesTheSameText) {
+  ScratchDirectory directory;
+  const fs::path file = directory / "schema.json";
+  const CommandResult to_file = run_sinew({"schema", "--json", "-o", file.string()}, directory);
+  EXPECT_EQ(to_file.exit_code, 0) << to_file.err;
+  const CommandResult to_stdout = run_sinew({"schema", "--json"}, directory);
+  ASSERT_TRUE(fs::is_regular_file(file));
+  EXPECT_EQ(read_text(file), to_stdout.out);
+}
+
+TEST(Cli, SuccessfulRunWritesEveryOutputAtomically) {
+  ScratchDirectory directory;
+  const fs::path scene = directory / "scene.json";
+  const fs::path output = directory / "out";
+  write_text(scene, small_block_scene().dump(2));
+  const CommandResult result = run_scene_file(scene, output, directory);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  ASSERT_TRUE(fs::is_directory(output));
+  for (const char* file : {"sinew.pvd", "steps.csv", "newton.csv", "summary.json", "vtu/increment_0000.vtu",
+                           "vtu/increment_0001.vtu", "vtu/increment_0002.vtu"}) {
+    EXPECT_TRUE(fs::is_regular_file(output / file)) << file;
+  }
+  EXPECT_FALSE(fs::exists(output / "last_converged.vtu"));
+  // No temporary file ("." + name + ".tmp...") left anywhere in the tree.
+  for (const auto& path : files_under(output)) {
+    EXPECT_THAT(fs::path(path).filename().string(), Not(StartsWith("."))) << path;
+  }
+  const json summary = json::parse(read_text(output / "summary.json"));
+  EXPECT_EQ(summary.at("success"), true);
+  EXPECT_EQ(summary.at("scene"), "small-block");
+}
+
+}  // namespace
+}  // namespace sinew::app_test
