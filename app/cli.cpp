@@ -19,6 +19,7 @@ namespace sinew::app {
 int run_cli(int argc, char** argv) {
   CLI::App cli{"sinew: implicit finite elements for elastic solids in contact"};
   cli.require_subcommand(1);
+  cli.fallthrough();  // global options (-q, -j) may also follow the subcommand
   int threads = 0;
   bool quiet = false;
   cli.add_option("-j,--threads", threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);

@@ -289,7 +289,7 @@ TEST(ReadMsh, FoldedTetIsRejectedAsInverted) {
              "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
              "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 0.2 0.2 0.5\n$EndNodes\n"
              "$Elements\n2\n1 4 2 0 1 1 2 3 4\n2 4 2 0 1 1 3 2 5\n$EndElements\n");
-  EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr(path), HasSubstr("inverted tetrahedra"),
+  EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr(path), HasSubstr("inverted tetrahedron"),
                                           HasSubstr("tets 0 and 1"), HasSubstr("folds over itself")));
 }
 

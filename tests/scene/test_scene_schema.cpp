@@ -55,7 +55,7 @@ TEST(SceneSchema, DocumentedDefaultsEqualTheStructDefaults) {
   const solver::StaticSolverOptions solver;
   EXPECT_EQ(default_at("solver.increments"), solver.stepping.increments);
   EXPECT_EQ(default_at("solver.predictor"), predictor_name(solver.stepping.predictor));
-  EXPECT_EQ(default_at("solver.predictor"), "two-point");
+  EXPECT_EQ(default_at("solver.predictor"), "tangent");
   EXPECT_EQ(default_at("solver.min_step"), solver.stepping.min_step);
   EXPECT_EQ(default_at("solver.growth"), solver.stepping.growth);
   EXPECT_EQ(default_at("solver.easy_iterations"), solver.stepping.easy_iterations);

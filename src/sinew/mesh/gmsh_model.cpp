@@ -104,7 +104,8 @@ void reject_folded_tets(const Positions& rest, const Tets& tets) {
              std::to_string(folded[i].second) + " (1-based " + std::to_string(folded[i].first + 1) + " and " +
              std::to_string(folded[i].second + 1) + ")";
   throw InputError(std::to_string(folded.size()) +
-                   " inverted tetrahedra: pairs of tets that share a face lie on the same side of it, so the mesh "
+                   (folded.size() == 1 ? " inverted tetrahedron: a pair" : " inverted tetrahedra: pairs") +
+                   " of tets that share a face lie on the same side of it, so the mesh "
                    "folds over itself; first: " + first + ". Fix the mesh (e.g. re-mesh it in Gmsh).");
 }
 

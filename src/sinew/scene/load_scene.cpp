@@ -466,6 +466,10 @@ SceneConfig load_scene_file(const std::string& path) {
       }
     }
     throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": malformed JSON: " + e.what());
+  } catch (const json::exception& e) {
+    // e.g. out_of_range 406: a number too large for a double ("1e999"): JSON has no infinity.
+    throw InputError(path + ": malformed JSON: " + e.what() +
+                     " (numbers must be finite and within the range of a double)");
   }
   const std::string where = "\n(in scene file " + path + ")";
   if (!duplicates.errors.empty()) throw InputError(join_lines(duplicates.errors) + where);

@@ -141,10 +141,11 @@ StaticResult solve_static(Objective& objective, const StaticSolverOptions& optio
       objective.set_load_parameter(current.lambda);
       if (step < stepping.min_step * increment_size) {
         result.message = fmt::format(
-            "load step from lambda = {:.6g} could not be solved even at step size {:.3g} (the minimum is {:.3g} of "
-            "an increment): {}. The last converged state (lambda = {:.6g}) is kept. Try more increments, "
-            "quasi-viscosity, or check that the prescribed motion is physically possible.",
-            current.lambda, delta, stepping.min_step, newton.failure, current.lambda);
+            "load step from lambda = {:.6g} could not be solved even with a step of {:.3g} (the smallest allowed is "
+            "{:.3g}, min_step = {:.3g} of an increment): {}. The last converged state (lambda = {:.6g}) is kept. Try "
+            "more increments, quasi-viscosity, or check that the prescribed motion is physically possible.",
+            current.lambda, delta, stepping.min_step * increment_size, stepping.min_step, newton.failure,
+            current.lambda);
         return result;
       }
     }
