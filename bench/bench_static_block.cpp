@@ -53,7 +53,7 @@ scene::SceneConfig block_scene(double element_size) {
 
 void BM_CompressBlock(benchmark::State& state, solver::LoadSteppingOptions::Predictor predictor,
                       solver::LinearSolverOptions::Kind linear) {
-  scene::SceneConfig scene = block_scene(1.05);
+  scene::SceneConfig scene = block_scene(0.95);  // about 9k nodes, 43k tets
   scene.solver.stepping.predictor = predictor;
   scene.solver.linear.kind = linear;
   if (linear != solver::LinearSolverOptions::Kind::Cholmod) {
