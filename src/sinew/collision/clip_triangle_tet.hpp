@@ -1,0 +1,83 @@
+#pragma once
+/// @file clip_triangle_tet.hpp
+/// The intersection of a triangle with a tetrahedron (the integration domain of the contact
+/// energy, GUIDE.md section 1): the triangle clipped by the four face half-spaces of the tet
+/// (Sutherland-Hodgman on the triangle's plane). Every polygon vertex carries its provenance
+/// (a triangle vertex, a triangle edge crossing a tet face plane, or a tet edge crossing the
+/// triangle's plane), from which the exact derivatives of the contact energy are built, and its
+/// barycentric coordinates in the tet. Fixed capacity, no heap.
+///
+/// Conventions: tet face f is the face opposite tet vertex f, i.e. the plane xi_f = 0, and its
+/// inside half-space is xi_f >= 0 (xi = barycentric coordinates in the tet). Points exactly on
+/// a plane count as inside (the tet is closed); barycentric values within kClipSnap of 0 are
+/// treated as exactly 0, so a triangle lying in a face plane is clipped by the other faces only.
+/// Lengths are in the caller's unit; barycentric coordinates are dimensionless.
+
+#include <array>
+#include <cstdint>
+
+#include "sinew/core/types.hpp"
+
+namespace sinew::collision {
+
+/// A triangle clipped by 4 planes has at most 3 + 4 vertices.
+inline constexpr int kMaxClipVertices = 7;
+
+/// Barycentric values with |xi| <= kClipSnap are taken as exactly 0 when classifying against a
+/// face plane (dimensionless, hence independent of the length unit).
+inline constexpr double kClipSnap = 1e-14;
+
+/// What a clip-polygon vertex is, in terms of the raw node positions.
+enum class ClipVertexKind : std::uint8_t {
+  TriangleVertex,       ///< triangle vertex `a`
+  TriangleEdgeTetFace,  ///< triangle edge (a, b) crossing the plane of tet face `face`
+  TetEdgeTrianglePlane  ///< tet edge (a, b) crossing the plane of the triangle
+};
+
+/// Provenance of one polygon vertex. Indices are local: triangle vertices 0..2, tet vertices
+/// (and faces) 0..3. For the two edge kinds a < b. Unused fields are -1.
+struct ClipVertexProvenance {
+  ClipVertexKind kind = ClipVertexKind::TriangleVertex;
+  std::int8_t a = -1;     ///< triangle vertex, or first vertex of the triangle/tet edge
+  std::int8_t b = -1;     ///< second vertex of the triangle edge or of the tet edge
+  std::int8_t face = -1;  ///< TriangleEdgeTetFace only: the tet face (= opposite tet vertex)
+
+  friend bool operator==(const ClipVertexProvenance&, const ClipVertexProvenance&) = default;
+};
+
+/// The convex polygon triangle ∩ tet, vertices in order around the polygon (same turning sense
+/// as the triangle's vertex order). `count` is 0 when the intersection is empty or has fewer
+/// than 3 vertices; a degenerate (zero-area) polygon may still have count >= 3.
+struct ClipPolygon {
+  int count = 0;
+  std::array<Vector3, kMaxClipVertices> vertices;                  ///< positions (length unit)
+  /// Barycentric coordinates in the tet, clamped to [0, 1] and summing to 1.
+  std::array<Eigen::Vector4d, kMaxClipVertices> barycentric;
+  std::array<ClipVertexProvenance, kMaxClipVertices> provenance;
+
+  bool empty() const { return count == 0; }
+};
+
+/// Clips `triangle` (3x3, one vertex per row) by the closed tet `tet` (4x3, one vertex per row,
+/// either orientation). Exits early when the triangle lies strictly outside one face plane.
+/// A degenerate (zero-volume) tet gives an empty polygon. Never produces NaN for finite input.
+ClipPolygon clip_triangle_tet(const Matrix3& triangle, const Eigen::Matrix<double, 4, 3>& tet);
+
+/// Barycentric coordinates of point `x` in `tet` (4x3, rows = vertices), computed per face as
+/// xi_f = n_f.(x - p) / n_f.(P_f - p) with n_f the normal of face f and p a vertex on it.
+/// The four values sum to 1 up to round-off; NaN/inf only for a zero-volume tet.
+Eigen::Vector4d tet_barycentric(const Vector3& x, const Eigen::Matrix<double, 4, 3>& tet);
+
+/// Point-collocation baseline (dissertation §5.3.5): the triangle vertices that lie in the
+/// closed tet (barycentric coordinates >= -kClipSnap), in increasing order, with their
+/// barycentric coordinates (clamped to [0, 1], summing to 1). The caller applies weight A/3 each.
+struct CollocationPoints {
+  int count = 0;
+  std::array<std::int8_t, 3> vertex{{-1, -1, -1}};  ///< local triangle vertex indices
+  std::array<Eigen::Vector4d, 3> barycentric;
+};
+
+CollocationPoints triangle_vertices_in_tet(const Matrix3& triangle,
+                                           const Eigen::Matrix<double, 4, 3>& tet);
+
+}  // namespace sinew::collision
