@@ -299,7 +299,8 @@ void DofMap::reduce_hessian(const State& state, const BlockSparseMatrix& H, cons
       }
     }
   }
-  // Second-order term of the rotation map: sum_a sym(g_a arm_a^T)/... (see header).
+  // Second-order term of the rotation map: sum_a [sym(g_a arm_a^T) - (g_a . arm_a) I] on the
+  // rotation block (x_a = exp([w]x) arm_a + ..., expanded to second order in w).
   for (std::size_t r = 0; r < rigid_.size(); ++r) {
     const RigidInfo& info = rigid_[r];
     if (info.kind != RigidBody::Kind::Free) continue;
@@ -309,8 +310,6 @@ void DofMap::reduce_hessian(const State& state, const BlockSparseMatrix& H, cons
       const Vector3 ga = g.row(a).transpose();
       G += 0.5 * (ga * arm.transpose() + arm * ga.transpose()) - ga.dot(arm) * Matrix3::Identity();
     }
-    const Index* diag_block = nullptr;
-    (void)diag_block;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
         const Index row = info.dof + 3 + i, col = info.dof + 3 + j;

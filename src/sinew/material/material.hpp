@@ -16,12 +16,6 @@
 
 namespace sinew::material {
 
-/// What an evaluation should compute besides psi.
-struct EvalRequest {
-  bool stress = true;      ///< fill P
-  bool tangent = false;    ///< fill dPdF
-};
-
 class Material {
  public:
   virtual ~Material() = default;
