@@ -20,7 +20,7 @@ StaticModel make_static_model(const fem::Problem& problem, const solver::StaticS
       fem::lumped_masses(mesh.rest, mesh.tets, mesh.region, problem.region_density), problem.gravity,
       fem::Amplitude{}, problem.forces, mesh.num_nodes());
   model.objective = std::make_unique<solver::Objective>(
-      *model.dofs, std::vector<fem::Energy*>{model.elastic.get(), model.external.get()}, mesh.num_nodes());
+      *model.dofs, std::vector<Energy*>{model.elastic.get(), model.external.get()}, mesh.num_nodes());
 
   const Vector3 extent = mesh.rest.colwise().maxCoeff() - mesh.rest.colwise().minCoeff();
   const double length = std::max(extent.norm(), 1e-300);

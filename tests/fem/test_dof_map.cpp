@@ -60,8 +60,8 @@ struct Fixture {
         Vector3(0, 0, -1), fem::Amplitude{}, std::vector<fem::NodalForce>{}, problem.mesh.num_nodes());
   }
   double energy(const fem::State& s) const { return elastic->value(s.x) + external->value(s.x); }
-  fem::NodalVectors gradient(const fem::State& s) const {
-    fem::NodalVectors g = fem::NodalVectors::Zero(s.x.rows(), 3);
+  NodalVectors gradient(const fem::State& s) const {
+    NodalVectors g = NodalVectors::Zero(s.x.rows(), 3);
     elastic->add_gradient(s.x, g);
     external->add_gradient(s.x, g);
     return g;
@@ -123,14 +123,14 @@ TEST_P(DofMapDerivatives, ReducedGradientAndHessianMatchFiniteDifferences) {
   const Index n = f.dofs->num_dofs();
   auto E = [&](const VectorX& q) { return f.energy(f.dofs->apply_step(base, q, 1.0)); };
 
-  const fem::NodalVectors g_full = f.gradient(base);
+  const NodalVectors g_full = f.gradient(base);
   const VectorX g = f.dofs->reduce_gradient(base, g_full);
   const VectorX fd_g = st::fd_gradient(E, VectorX::Zero(n), 1e-6);
   EXPECT_LT(st::relative_error(g, fd_g), 1e-7);
 
   std::vector<std::pair<Index, Index>> pairs;
   f.elastic->hessian_pattern(pairs);
-  fem::BlockSparseMatrix H;
+  BlockSparseMatrix H;
   H.set_pattern(f.problem.mesh.num_nodes(), pairs);
   f.elastic->bind_pattern(H);
   f.dofs->bind_pattern(H);
@@ -189,7 +189,7 @@ TEST(Reactions, BalanceGravityOnAFixedBody) {
   fem::ExternalForceEnergy gravity(fem::lumped_masses(p.mesh.rest, p.mesh.tets, p.mesh.region, p.region_density),
                                    Vector3(0, 0, -9.81), {}, {}, p.mesh.num_nodes());
   fem::State s = dofs.initial_state(1.0);
-  fem::NodalVectors g = fem::NodalVectors::Zero(p.mesh.num_nodes(), 3);
+  NodalVectors g = NodalVectors::Zero(p.mesh.num_nodes(), 3);
   elastic.add_gradient(s.x, g);
   gravity.add_gradient(s.x, g);
   // Move free nodes to make the elastic forces non-zero; the reaction still balances the load

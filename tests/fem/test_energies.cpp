@@ -44,20 +44,20 @@ TEST_P(ElasticEnergyFD, GradientAndHessianMatchFiniteDifferences) {
   const Positions x = perturbed(p.mesh.rest * 1.1, 0.05, 7);
   ASSERT_TRUE(energy.is_valid(x));
 
-  fem::NodalVectors g = fem::NodalVectors::Zero(x.rows(), 3);
+  NodalVectors g = NodalVectors::Zero(x.rows(), 3);
   energy.add_gradient(x, g);
   const VectorX fd_g = st::fd_gradient([&](const VectorX& v) { return energy.value(unflat(v)); }, flat(x), 1e-6);
   EXPECT_LT(st::relative_error(flat(g), fd_g), 1e-7);
 
   std::vector<std::pair<Index, Index>> pairs;
   energy.hessian_pattern(pairs);
-  fem::BlockSparseMatrix H;
+  BlockSparseMatrix H;
   H.set_pattern(static_cast<Index>(x.rows()), pairs);
   energy.bind_pattern(H);
   energy.add_hessian(x, H);
   const MatrixX fd_H = st::fd_jacobian(
       [&](const VectorX& v) {
-        fem::NodalVectors gv = fem::NodalVectors::Zero(x.rows(), 3);
+        NodalVectors gv = NodalVectors::Zero(x.rows(), 3);
         energy.add_gradient(unflat(v), gv);
         return flat(gv);
       },
@@ -76,7 +76,7 @@ TEST(ElasticEnergy, RestIsStressFreeAndRigidMotionsCostNothing) {
   const Matrix3 R = Eigen::AngleAxisd(0.7, Vector3(1, 2, 3).normalized()).toRotationMatrix();
   Positions moved = (p.mesh.rest * R.transpose()).rowwise() + Eigen::RowVector3d(3, -1, 2);
   EXPECT_NEAR(energy.value(moved), 0, 1e-11);
-  fem::NodalVectors g = fem::NodalVectors::Zero(moved.rows(), 3);
+  NodalVectors g = NodalVectors::Zero(moved.rows(), 3);
   energy.add_gradient(moved, g);
   EXPECT_LT(g.norm(), 1e-11);
 }
@@ -98,7 +98,7 @@ TEST(ElasticEnergy, ProjectedHessianIsPositiveSemiDefinite) {
   x = perturbed(x, 0.05, 3);
   std::vector<std::pair<Index, Index>> pairs;
   energy.hessian_pattern(pairs);
-  fem::BlockSparseMatrix H;
+  BlockSparseMatrix H;
   H.set_pattern(static_cast<Index>(x.rows()), pairs);
   energy.bind_pattern(H);
   energy.add_hessian(x, H);
@@ -114,7 +114,7 @@ TEST(ExternalForceEnergy, GravityUsesLumpedMassAndAmplitude) {
   ext.set_load_parameter(0.5);
   EXPECT_NEAR(ext.forces().col(2).sum(), -0.5 * 10 * 30, 1e-10);
   // E = -f.x: gradient is -f
-  fem::NodalVectors g = fem::NodalVectors::Zero(p.mesh.num_nodes(), 3);
+  NodalVectors g = NodalVectors::Zero(p.mesh.num_nodes(), 3);
   ext.add_gradient(p.mesh.rest, g);
   EXPECT_LT((g + ext.forces()).norm(), 1e-14);
   EXPECT_NEAR(ext.value(p.mesh.rest), -(ext.forces().array() * p.mesh.rest.array()).sum(), 1e-12);

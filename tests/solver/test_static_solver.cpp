@@ -43,7 +43,7 @@ struct SolverRig {
     external = std::make_unique<fem::ExternalForceEnergy>(
         fem::lumped_masses(problem.mesh.rest, problem.mesh.tets, problem.mesh.region, problem.region_density),
         problem.gravity, fem::Amplitude{}, problem.forces, problem.mesh.num_nodes());
-    objective = std::make_unique<solver::Objective>(*dofs, std::vector<fem::Energy*>{elastic.get(), external.get()},
+    objective = std::make_unique<solver::Objective>(*dofs, std::vector<Energy*>{elastic.get(), external.get()},
                                                     problem.mesh.num_nodes());
   }
 };

@@ -10,8 +10,8 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
-#include "sinew/fem/block_sparse_matrix.hpp"
-#include "sinew/fem/energy.hpp"
+#include "sinew/core/block_sparse_matrix.hpp"
+#include "sinew/core/energy.hpp"
 #include "sinew/fem/problem.hpp"
 
 namespace sinew::fem {

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "sinew/fem/energy.hpp"
+#include "sinew/core/energy.hpp"
 #include "sinew/fem/tet_kinematics.hpp"
 #include "sinew/material/material.hpp"
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "sinew/fem/constraints_config.hpp"
-#include "sinew/fem/energy.hpp"
+#include "sinew/core/energy.hpp"
 
 namespace sinew::fem {
 

@@ -86,7 +86,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
     return result;
   }
   double scale = 0;
-  fem::NodalVectors full_g;
+  NodalVectors full_g;
   VectorX g;
   {
     Stopwatch watch(times.forces_and_stiffness);
@@ -135,7 +135,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
     bool accepted = false;
     fem::State trial;
     double trial_energy = 0;
-    fem::NodalVectors trial_full_g;
+    NodalVectors trial_full_g;
     VectorX trial_g;
     double trial_scale = 0;
     for (; halvings <= options.max_line_search_steps; ++halvings, alpha *= 0.5) {

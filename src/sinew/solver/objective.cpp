@@ -6,35 +6,53 @@
 
 namespace sinew::solver {
 
-Objective::Objective(fem::DofMap& dofs, std::vector<fem::Energy*> terms, Index num_nodes)
+Objective::Objective(fem::DofMap& dofs, std::vector<Energy*> terms, Index num_nodes)
     : dofs_(dofs), terms_(std::move(terms)), num_nodes_(num_nodes) {}
 
 void Objective::set_load_parameter(double lambda) {
   for (auto* term : terms_) term->set_load_parameter(lambda);
 }
 
-bool Objective::is_valid(const fem::State& state) const {
+void Objective::update_terms(const fem::State& state) {
+  if (!state.x.allFinite()) return;
+  for (auto* term : terms_) term->update(state.x);
+}
+
+void Objective::begin_step(const fem::State& state) {
+  if (!state.x.allFinite()) return;
+  for (auto* term : terms_) term->begin_step(state.x);
+}
+
+std::uint64_t Objective::pattern_revisions() const {
+  std::uint64_t sum = 0;
+  for (auto* term : terms_) sum += term->pattern_revision();
+  return sum;
+}
+
+bool Objective::is_valid(const fem::State& state) {
   if (!state.x.allFinite()) return false;
+  update_terms(state);
   for (auto* term : terms_)
     if (!term->is_valid(state.x)) return false;
   return true;
 }
 
-double Objective::value(const fem::State& state) const {
+double Objective::value(const fem::State& state) {
   if (!is_valid(state)) return std::numeric_limits<double>::infinity();
   double sum = 0;
   for (auto* term : terms_) sum += term->value(state.x);
   return std::isnan(sum) ? std::numeric_limits<double>::infinity() : sum;
 }
 
-fem::NodalVectors Objective::full_gradient(const fem::State& state, double* force_scale) const {
-  fem::NodalVectors g = fem::NodalVectors::Zero(num_nodes_, 3);
+NodalVectors Objective::full_gradient(const fem::State& state, double* force_scale) {
+  NodalVectors g = NodalVectors::Zero(num_nodes_, 3);
+  update_terms(state);
   if (!force_scale) {
     for (auto* term : terms_) term->add_gradient(state.x, g);
     return g;
   }
   *force_scale = 0;
-  fem::NodalVectors term_gradient(num_nodes_, 3);
+  NodalVectors term_gradient(num_nodes_, 3);
   for (auto* term : terms_) {
     term_gradient.setZero();
     term->add_gradient(state.x, term_gradient);
@@ -51,12 +69,14 @@ void Objective::rebuild_pattern() {
   for (auto* term : terms_) term->bind_pattern(H_);
   dofs_.bind_pattern(H_);
   pattern_ready_ = true;
+  pattern_revision_ = pattern_revisions();
 }
 
-bool Objective::hessian(const fem::State& state, const fem::NodalVectors& full_gradient,
+bool Objective::hessian(const fem::State& state, const NodalVectors& full_gradient,
                         const VectorX& node_viscosity, fem::SparseMatrix& K) {
   bool fresh = false;
-  if (!pattern_ready_) {
+  update_terms(state);
+  if (!pattern_ready_ || pattern_revisions() != pattern_revision_) {
     rebuild_pattern();
     fresh = true;
   }

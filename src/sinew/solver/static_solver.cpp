@@ -21,7 +21,7 @@ fem::State tangent_prediction(Objective& objective, const fem::State& converged,
   const double h = 1e-6 * std::max(1.0, std::abs(lambda0));
   auto t0 = std::chrono::steady_clock::now();
   objective.set_load_parameter(lambda0);
-  const fem::NodalVectors g0_full = objective.full_gradient(converged);
+  const NodalVectors g0_full = objective.full_gradient(converged);
   const VectorX g0 = dofs.reduce_gradient(converged, g0_full);
   if (!linear_ready) {
     const bool fresh = objective.hessian(converged, g0_full, setup.node_viscosity, K);
@@ -70,6 +70,7 @@ StaticResult solve_static(Objective& objective, const StaticSolverOptions& optio
   // Equilibrium at lambda = 0 (a stress-free rest state converges at once).
   fem::State current = dofs.initial_state(0.0);
   objective.set_load_parameter(0.0);
+  objective.begin_step(current);
   {
     const NewtonResult newton = newton_solve(objective, current, options.newton, *linear, K, context, result.times);
     result.newton_iterations += newton.iterations;
@@ -103,6 +104,7 @@ StaticResult solve_static(Objective& objective, const StaticSolverOptions& optio
       attempt.cuts = result.cuts;
 
       // Predictor.
+      objective.begin_step(current);
       fem::State trial;
       if (stepping.predictor == Predictor::Tangent) {
         trial = tangent_prediction(objective, current, lambda_new, *linear, K, linear_ready, setup, result.times);

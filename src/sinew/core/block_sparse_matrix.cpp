@@ -1,8 +1,8 @@
-#include "sinew/fem/block_sparse_matrix.hpp"
+#include "sinew/core/block_sparse_matrix.hpp"
 
 #include <algorithm>
 
-namespace sinew::fem {
+namespace sinew {
 
 void BlockSparseMatrix::set_pattern(Index num_nodes, std::vector<std::pair<Index, Index>> pairs) {
   const std::size_t n = pairs.size();
@@ -55,4 +55,4 @@ MatrixX BlockSparseMatrix::to_dense() const {
   return D;
 }
 
-}  // namespace sinew::fem
+}  // namespace sinew

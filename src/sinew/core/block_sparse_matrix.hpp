@@ -9,7 +9,7 @@
 
 #include "sinew/core/types.hpp"
 
-namespace sinew::fem {
+namespace sinew {
 
 class BlockSparseMatrix {
  public:
@@ -48,4 +48,4 @@ class BlockSparseMatrix {
   std::vector<Matrix3> values_;
 };
 
-}  // namespace sinew::fem
+}  // namespace sinew

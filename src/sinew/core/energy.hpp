@@ -5,13 +5,14 @@
 /// All terms work on full node positions x (#V x 3); constraints and rigid bodies are the
 /// DofMap's business, not the energies'.
 
+#include <cstdint>
 #include <string_view>
 #include <utility>
 #include <vector>
 
-#include "sinew/fem/block_sparse_matrix.hpp"
+#include "sinew/core/block_sparse_matrix.hpp"
 
-namespace sinew::fem {
+namespace sinew {
 
 /// Gradient storage: #V x 3, same layout as Positions (force unit).
 using NodalVectors = Positions;
@@ -38,6 +39,18 @@ class Energy {
   virtual void set_load_parameter(double /*lambda*/) {}
   /// True when the Hessian has nothing to add (linear terms).
   virtual bool has_hessian() const { return true; }
+
+  /// The state moved to x (#V x 3): terms whose value depends on x-dependent bookkeeping
+  /// (contact pairs) refresh it here. Called by the objective before value(), add_gradient(),
+  /// add_hessian() or is_valid() at a new x; cheap to call again with the same x.
+  virtual void update(const Positions& /*x*/) {}
+  /// A load or time step starts from the converged positions x (#V x 3): terms may rebuild
+  /// acceleration structures here (the contact BVH), then update(x) follows.
+  virtual void begin_step(const Positions& /*x*/) {}
+  /// Incremented whenever hessian_pattern() would return pairs not returned before (contact
+  /// pairs appearing); the objective then rebuilds the Hessian's pattern. Constant for terms
+  /// with a fixed pattern.
+  virtual std::uint64_t pattern_revision() const { return 0; }
 };
 
-}  // namespace sinew::fem
+}  // namespace sinew

@@ -1,0 +1,283 @@
+#include "sinew/contact/pair_integral.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "sinew/contact/dual.hpp"
+
+namespace sinew::contact {
+namespace {
+
+using collision::ClipVertexKind;
+
+/// A 3-vector over any scalar type (double, Dual, Dual2); Eigen needs NumTraits for custom
+/// scalars, a plain struct does not.
+template <class S>
+struct Vec {
+  S x, y, z;
+  friend Vec operator+(const Vec& a, const Vec& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+  friend Vec operator-(const Vec& a, const Vec& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+  friend Vec operator*(const Vec& a, const S& s) { return {a.x * s, a.y * s, a.z * s}; }
+};
+template <class S>
+S dot(const Vec<S>& a, const Vec<S>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+template <class S>
+Vec<S> cross(const Vec<S>& a, const Vec<S>& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+/// The 7 nodes of a pair as scalars of type S (independent variables for the dual types).
+template <class S>
+struct Nodes {
+  std::array<Vec<S>, 3> tri;
+  std::array<Vec<S>, 4> tet;
+};
+
+template <class S>
+S make_variable(double value, int index) {
+  if constexpr (std::is_same_v<S, double>) {
+    (void)index;
+    return value;
+  } else {
+    return S::variable(value, index);
+  }
+}
+
+template <class S>
+Nodes<S> make_nodes(const PairGeometry& pair) {
+  Nodes<S> n;
+  for (int k = 0; k < 3; ++k)
+    n.tri[k] = {make_variable<S>(pair.triangle(k, 0), 3 * k), make_variable<S>(pair.triangle(k, 1), 3 * k + 1),
+                make_variable<S>(pair.triangle(k, 2), 3 * k + 2)};
+  for (int k = 0; k < 4; ++k)
+    n.tet[k] = {make_variable<S>(pair.tet(k, 0), 9 + 3 * k), make_variable<S>(pair.tet(k, 1), 9 + 3 * k + 1),
+                make_variable<S>(pair.tet(k, 2), 9 + 3 * k + 2)};
+  return n;
+}
+
+/// Position of a clip-polygon vertex as a smooth function of the nodes.
+template <class S>
+Vec<S> polygon_vertex(const Nodes<S>& n, const collision::ClipVertexProvenance& p) {
+  switch (p.kind) {
+    case ClipVertexKind::TriangleVertex:
+      return n.tri[static_cast<std::size_t>(p.a)];
+    case ClipVertexKind::TriangleEdgeTetFace: {
+      // Plane through the three tet vertices other than `face`.
+      std::array<int, 3> v{};
+      int m = 0;
+      for (int k = 0; k < 4; ++k)
+        if (k != p.face) v[static_cast<std::size_t>(m++)] = k;
+      const Vec<S>& q0 = n.tet[static_cast<std::size_t>(v[0])];
+      const Vec<S> normal = cross(n.tet[static_cast<std::size_t>(v[1])] - q0, n.tet[static_cast<std::size_t>(v[2])] - q0);
+      const Vec<S>& xa = n.tri[static_cast<std::size_t>(p.a)];
+      const Vec<S> edge = n.tri[static_cast<std::size_t>(p.b)] - xa;
+      const S s = dot(normal, q0 - xa) / dot(normal, edge);
+      return xa + edge * s;
+    }
+    case ClipVertexKind::TetEdgeTrianglePlane: {
+      const Vec<S> normal = cross(n.tri[1] - n.tri[0], n.tri[2] - n.tri[0]);
+      const Vec<S>& qa = n.tet[static_cast<std::size_t>(p.a)];
+      const Vec<S> edge = n.tet[static_cast<std::size_t>(p.b)] - qa;
+      const S s = dot(normal, n.tri[0] - qa) / dot(normal, edge);
+      return qa + edge * s;
+    }
+  }
+  return n.tri[0];
+}
+
+/// The affine depth field of the tet: g(y) = d0 + G . (y - q0).
+template <class S>
+struct DepthField {
+  S d0;
+  Vec<S> q0;
+  Vec<S> G;
+  S at(const Vec<S>& y) const { return d0 + dot(G, y - q0); }
+};
+
+template <class S>
+DepthField<S> depth_field(const Nodes<S>& n, const Eigen::Vector4d& depth) {
+  const Vec<S> e1 = n.tet[1] - n.tet[0], e2 = n.tet[2] - n.tet[0], e3 = n.tet[3] - n.tet[0];
+  const Vec<S> c1 = cross(e2, e3), c2 = cross(e3, e1), c3 = cross(e1, e2);
+  const S volume6 = dot(e1, c1);
+  const S inv = S(1.0) / volume6;
+  Vec<S> G = c1 * S(depth[1] - depth[0]) + c2 * S(depth[2] - depth[0]) + c3 * S(depth[3] - depth[0]);
+  G = G * inv;
+  return {S(depth[0]), n.tet[0], G};
+}
+
+/// Depths at the polygon vertices and signed fan-triangle areas (fan from vertex 0), measured
+/// along the triangle's unit normal, so they are smooth even when a fan triangle degenerates.
+template <class S>
+struct Fan {
+  int count = 0;
+  std::array<S, collision::kMaxClipVertices> g;
+  std::array<S, collision::kMaxClipVertices> area;  ///< area[j], j = 1 .. count-2
+};
+
+template <class S>
+Fan<S> make_fan(const Nodes<S>& n, const Eigen::Vector4d& depth, const collision::ClipPolygon& polygon) {
+  Fan<S> fan;
+  fan.count = polygon.count;
+  if (polygon.count < 3) return fan;
+  const DepthField<S> field = depth_field(n, depth);
+  std::array<Vec<S>, collision::kMaxClipVertices> p;
+  for (int k = 0; k < polygon.count; ++k) {
+    p[static_cast<std::size_t>(k)] = polygon_vertex(n, polygon.provenance[static_cast<std::size_t>(k)]);
+    fan.g[static_cast<std::size_t>(k)] = field.at(p[static_cast<std::size_t>(k)]);
+  }
+  const Vec<S> normal = cross(n.tri[1] - n.tri[0], n.tri[2] - n.tri[0]);
+  const S half_inv_length = S(0.5) / sqrt(dot(normal, normal));
+  for (int j = 1; j + 1 < polygon.count; ++j) {
+    const auto J = static_cast<std::size_t>(j);
+    fan.area[J] = dot(normal, cross(p[J] - p[0], p[J + 1] - p[0])) * half_inv_length;
+  }
+  return fan;
+}
+
+/// ∫ over a triangle of an affine f with vertex values a, b, c: A/12 (a² + b² + c² + (a+b+c)²).
+template <class S>
+S triangle_square_integral(const S& area, const S& a, const S& b, const S& c) {
+  const S sum = a + b + c;
+  return area * (a * a + b * b + c * c + sum * sum) * (1.0 / 12.0);
+}
+
+template <class S>
+S fan_integral(const Fan<S>& fan) {
+  S total(0.0);
+  for (int j = 1; j + 1 < fan.count; ++j) {
+    const auto J = static_cast<std::size_t>(j);
+    total += triangle_square_integral(fan.area[J], fan.g[0], fan.g[J], fan.g[J + 1]);
+  }
+  return total;
+}
+
+template <class S>
+S area_integral_t(const PairGeometry& pair, const collision::ClipPolygon& polygon) {
+  if (polygon.count < 3) return S(0.0);
+  return fan_integral(make_fan(make_nodes<S>(pair), pair.depth, polygon));
+}
+
+template <class S>
+S point_integral_t(const PairGeometry& pair, const collision::CollocationPoints& points) {
+  if (points.count == 0) return S(0.0);
+  const Nodes<S> n = make_nodes<S>(pair);
+  const DepthField<S> field = depth_field(n, pair.depth);
+  const Vec<S> normal = cross(n.tri[1] - n.tri[0], n.tri[2] - n.tri[0]);
+  const S weight = sqrt(dot(normal, normal)) * (0.5 / 3.0);
+  S total(0.0);
+  for (int k = 0; k < points.count; ++k) {
+    const S g = field.at(n.tri[static_cast<std::size_t>(points.vertex[static_cast<std::size_t>(k)])]);
+    total += weight * g * g;
+  }
+  return total;
+}
+
+using D1 = Dual<kPairVariables>;
+using D2 = Dual2<kPairVariables>;
+
+}  // namespace
+
+double area_integral(const PairGeometry& pair, const collision::ClipPolygon& polygon) {
+  return area_integral_t<double>(pair, polygon);
+}
+
+double area_integral_gradient(const PairGeometry& pair, const collision::ClipPolygon& polygon, PairVector& gradient) {
+  const D1 I = area_integral_t<D1>(pair, polygon);
+  gradient = I.d;
+  return I.v;
+}
+
+double area_integral_hessian(const PairGeometry& pair, const collision::ClipPolygon& polygon, PairHessian kind,
+                             PairVector& gradient, PairMatrix& hessian) {
+  if (kind == PairHessian::Exact) {
+    const D2 I = area_integral_t<D2>(pair, polygon);
+    gradient = I.d;
+    hessian = I.h;
+    return I.v;
+  }
+  // Gauss-Newton: per fan triangle, A/12 (a² + b² + c² + s²) -> A/6 (∇a∇aᵀ + ∇b∇bᵀ + ∇c∇cᵀ + ∇s∇sᵀ)
+  // with the areas frozen (and clamped at 0, so the sum stays positive semi-definite).
+  hessian.setZero();
+  gradient.setZero();
+  if (polygon.count < 3) return 0;
+  const Fan<D1> fan = make_fan(make_nodes<D1>(pair), pair.depth, polygon);
+  const D1 I = fan_integral(fan);
+  gradient = I.d;
+  for (int j = 1; j + 1 < fan.count; ++j) {
+    const auto J = static_cast<std::size_t>(j);
+    const double w = std::max(0.0, fan.area[J].v) / 6.0;
+    const PairVector s = fan.g[0].d + fan.g[J].d + fan.g[J + 1].d;
+    hessian.noalias() += w * (fan.g[0].d * fan.g[0].d.transpose() + fan.g[J].d * fan.g[J].d.transpose() +
+                              fan.g[J + 1].d * fan.g[J + 1].d.transpose() + s * s.transpose());
+  }
+  return I.v;
+}
+
+PolygonMoments area_moments(const PairGeometry& pair, const collision::ClipPolygon& polygon) {
+  PolygonMoments m;
+  if (polygon.count < 3) return m;
+  const Fan<double> fan = make_fan(make_nodes<double>(pair), pair.depth, polygon);
+  for (int k = 0; k < fan.count; ++k) m.max_depth = std::max(m.max_depth, fan.g[static_cast<std::size_t>(k)]);
+  for (int j = 1; j + 1 < fan.count; ++j) {
+    const auto J = static_cast<std::size_t>(j);
+    m.area += fan.area[J];
+    m.depth_integral += fan.area[J] * (fan.g[0] + fan.g[J] + fan.g[J + 1]) / 3.0;
+  }
+  return m;
+}
+
+double point_integral(const PairGeometry& pair, const collision::CollocationPoints& points) {
+  return point_integral_t<double>(pair, points);
+}
+
+double point_integral_gradient(const PairGeometry& pair, const collision::CollocationPoints& points,
+                               PairVector& gradient) {
+  const D1 I = point_integral_t<D1>(pair, points);
+  gradient = I.d;
+  return I.v;
+}
+
+double point_integral_hessian(const PairGeometry& pair, const collision::CollocationPoints& points,
+                              PairHessian kind, PairVector& gradient, PairMatrix& hessian) {
+  if (kind == PairHessian::Exact) {
+    const D2 I = point_integral_t<D2>(pair, points);
+    gradient = I.d;
+    hessian = I.h;
+    return I.v;
+  }
+  hessian.setZero();
+  gradient.setZero();
+  if (points.count == 0) return 0;
+  const Nodes<D1> n = make_nodes<D1>(pair);
+  const DepthField<D1> field = depth_field(n, pair.depth);
+  const Vec<D1> normal = cross(n.tri[1] - n.tri[0], n.tri[2] - n.tri[0]);
+  const D1 weight = sqrt(dot(normal, normal)) * (0.5 / 3.0);
+  D1 total(0.0);
+  for (int k = 0; k < points.count; ++k) {
+    const D1 g = field.at(n.tri[static_cast<std::size_t>(points.vertex[static_cast<std::size_t>(k)])]);
+    total += weight * g * g;
+    hessian.noalias() += (2.0 * weight.v) * g.d * g.d.transpose();
+  }
+  gradient = total.d;
+  return total.v;
+}
+
+PolygonMoments point_moments(const PairGeometry& pair, const collision::CollocationPoints& points) {
+  PolygonMoments m;
+  if (points.count == 0) return m;
+  const Nodes<double> n = make_nodes<double>(pair);
+  const DepthField<double> field = depth_field(n, pair.depth);
+  const Vec<double> normal = cross(n.tri[1] - n.tri[0], n.tri[2] - n.tri[0]);
+  const double weight = std::sqrt(dot(normal, normal)) * (0.5 / 3.0);
+  for (int k = 0; k < points.count; ++k) {
+    const double g = field.at(n.tri[static_cast<std::size_t>(points.vertex[static_cast<std::size_t>(k)])]);
+    m.area += weight;
+    m.depth_integral += weight * g;
+    m.max_depth = std::max(m.max_depth, g);
+  }
+  return m;
+}
+
+}  // namespace sinew::contact

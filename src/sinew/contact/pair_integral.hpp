@@ -1,0 +1,66 @@
+#pragma once
+/// @file pair_integral.hpp
+/// The contact integral of one (boundary triangle, tetrahedron) pair and its exact derivatives
+/// (GUIDE.md section 1):
+///   area method:  I = ∫_{t ∩ e} g_e(y)² da(y), integrated exactly over the clip polygon,
+///   point method: I = Σ over triangle vertices v inside e of (A_t / 3) g_e(x_v)²,
+/// with g_e the linear interpolation of the nodal material depths over the tet, all in the
+/// current configuration. The pair's energy is (ε/2) I.
+///
+/// Local variables (21): the three triangle vertices, then the four tet vertices, x y z each:
+/// variable 3 k + c is coordinate c of local node k (k = 0..2 triangle, 3..6 tet vertex k - 3).
+/// The polygon's combinatorics (which edges cross which planes) comes from the clip; every
+/// polygon vertex is then recomputed as a smooth function of the 21 variables, so the gradient
+/// is the exact gradient of I, including the motion of the polygon's edges and the change of
+/// its area. Units: lengths L, depths L, I in L^4.
+
+#include "sinew/collision/clip_triangle_tet.hpp"
+#include "sinew/core/types.hpp"
+
+namespace sinew::contact {
+
+inline constexpr int kPairVariables = 21;
+using PairVector = Eigen::Matrix<double, kPairVariables, 1>;
+using PairMatrix = Eigen::Matrix<double, kPairVariables, kPairVariables>;
+using TetVertices = Eigen::Matrix<double, 4, 3>;
+
+/// Current positions of one pair and the material depths at the tet's nodes.
+struct PairGeometry {
+  Matrix3 triangle;       ///< rows: triangle vertices (L)
+  TetVertices tet;        ///< rows: tet vertices (L)
+  Eigen::Vector4d depth;  ///< material depth at the tet vertices (L)
+};
+
+/// How the Hessian of a pair is formed.
+enum class PairHessian {
+  Exact,       ///< the exact second derivative (indefinite in general)
+  GaussNewton  ///< Σ w ∇g ∇gᵀ over the quadrature of g² with frozen areas: positive semi-definite
+};
+
+/// ∫ g² da over the clip polygon `polygon` (from clip_triangle_tet of the same geometry).
+/// Zero for an empty polygon.
+double area_integral(const PairGeometry& pair, const collision::ClipPolygon& polygon);
+/// Same value; also writes dI/d(21 variables) into `gradient`.
+double area_integral_gradient(const PairGeometry& pair, const collision::ClipPolygon& polygon,
+                              PairVector& gradient);
+/// Same value and gradient; also writes the Hessian (21 x 21) of the chosen kind.
+double area_integral_hessian(const PairGeometry& pair, const collision::ClipPolygon& polygon, PairHessian kind,
+                             PairVector& gradient, PairMatrix& hessian);
+
+/// Polygon statistics: area (L²), ∫ g da (L³) and the largest g on the polygon (L).
+struct PolygonMoments {
+  double area = 0;
+  double depth_integral = 0;
+  double max_depth = 0;
+};
+PolygonMoments area_moments(const PairGeometry& pair, const collision::ClipPolygon& polygon);
+
+/// Point collocation: Σ over `points` (the triangle vertices inside the tet) of (A_t/3) g².
+double point_integral(const PairGeometry& pair, const collision::CollocationPoints& points);
+double point_integral_gradient(const PairGeometry& pair, const collision::CollocationPoints& points,
+                               PairVector& gradient);
+double point_integral_hessian(const PairGeometry& pair, const collision::CollocationPoints& points,
+                              PairHessian kind, PairVector& gradient, PairMatrix& hessian);
+PolygonMoments point_moments(const PairGeometry& pair, const collision::CollocationPoints& points);
+
+}  // namespace sinew::contact

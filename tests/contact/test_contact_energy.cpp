@@ -1,0 +1,98 @@
+#include "sinew/contact/contact_energy.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include "support/contact_fixtures.hpp"
+#include "support/fd_check.hpp"
+
+namespace sinew::contact {
+namespace {
+
+namespace st = sinew::testing;
+
+struct Evaluated {
+  double value;
+  NodalVectors gradient;
+  MatrixX hessian;
+};
+
+Evaluated evaluate(ContactEnergy& energy, const Positions& x) {
+  energy.update(x);
+  Evaluated e;
+  e.value = energy.value(x);
+  e.gradient = NodalVectors::Zero(x.rows(), 3);
+  energy.add_gradient(x, e.gradient);
+  std::vector<std::pair<Index, Index>> pairs;
+  energy.hessian_pattern(pairs);
+  BlockSparseMatrix H;
+  H.set_pattern(static_cast<Index>(x.rows()), pairs);
+  energy.add_hessian(x, H);
+  e.hessian = H.to_dense();
+  return e;
+}
+
+class ContactEnergyMethods : public ::testing::TestWithParam<ContactMethod> {};
+
+TEST_P(ContactEnergyMethods, GradientIsTheExactGradientOfTheTotalEnergy) {
+  const auto boxes = st::two_boxes(2, Vector3(0.62, 0.31, 0.17), 0.3, 7.0);
+  ContactEnergy energy(boxes.geometry, {GetParam(), PairHessian::Exact});
+  const Evaluated e = evaluate(energy, boxes.x);
+  ASSERT_GT(energy.active_pairs().size(), 20u);
+  ASSERT_GT(e.value, 0);
+  auto f = [&](const Eigen::VectorXd& v) {
+    const Positions x = st::unflatten(v);
+    energy.update(x);
+    return energy.value(x);
+  };
+  const Eigen::VectorXd fd = st::fd_gradient(f, st::flatten(boxes.x), 1e-7);
+  EXPECT_LT(st::relative_error(st::flatten(e.gradient), fd), 1e-6);
+}
+
+TEST_P(ContactEnergyMethods, ExactHessianMatchesDifferencesOfTheGradient) {
+  const auto boxes = st::two_boxes(2, Vector3(0.58, 0.27, 0.21), 0.25, 3.0);
+  ContactEnergy energy(boxes.geometry, {GetParam(), PairHessian::Exact});
+  const Evaluated e = evaluate(energy, boxes.x);
+  auto grad = [&](const Eigen::VectorXd& v) {
+    const Positions x = st::unflatten(v);
+    energy.update(x);
+    NodalVectors g = NodalVectors::Zero(x.rows(), 3);
+    energy.add_gradient(x, g);
+    return Eigen::VectorXd(st::flatten(g));
+  };
+  const Eigen::MatrixXd fd = st::fd_jacobian(grad, st::flatten(boxes.x), 1e-7);
+  EXPECT_LT(st::relative_error(e.hessian, fd), 1e-5);
+  EXPECT_LT(st::relative_error(e.hessian, e.hessian.transpose()), 1e-12);
+}
+
+TEST_P(ContactEnergyMethods, GaussNewtonHessianIsPositiveSemiDefinite) {
+  const auto boxes = st::two_boxes(2, Vector3(0.58, 0.27, 0.21), 0.25, 3.0);
+  ContactEnergy energy(boxes.geometry, {GetParam(), PairHessian::GaussNewton});
+  const Evaluated e = evaluate(energy, boxes.x);
+  const Eigen::SelfAdjointEigenSolver<MatrixX> eig(e.hessian);
+  EXPECT_GT(eig.eigenvalues().maxCoeff(), 0);
+  EXPECT_GT(eig.eigenvalues().minCoeff(), -1e-12 * eig.eigenvalues().maxCoeff());
+}
+
+TEST_P(ContactEnergyMethods, ForcesSumToZeroAndCarryNoTorque) {
+  for (const double angle : {0.0, 0.4, 1.1}) {
+    const auto boxes = st::two_boxes(3, Vector3(0.5, 0.45, -0.3), angle, 11.0);
+    ContactEnergy energy(boxes.geometry, {GetParam(), PairHessian::GaussNewton});
+    const Evaluated e = evaluate(energy, boxes.x);
+    ASSERT_GT(e.value, 0);
+    const Vector3 net = e.gradient.colwise().sum().transpose();
+    Vector3 torque = Vector3::Zero();
+    for (Index a = 0; a < boxes.x.rows(); ++a)
+      torque += Vector3(boxes.x.row(a)).cross(Vector3(e.gradient.row(a)));
+    const double scale = e.gradient.rowwise().norm().sum();
+    EXPECT_LT(net.norm(), 1e-12 * scale) << "angle " << angle;
+    EXPECT_LT(torque.norm(), 1e-12 * scale) << "angle " << angle;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, ContactEnergyMethods, ::testing::Values(ContactMethod::Area, ContactMethod::Point),
+                         [](const auto& info) { return info.param == ContactMethod::Area ? "Area" : "Point"; });
+
+}  // namespace
+}  // namespace sinew::contact
