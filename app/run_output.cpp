@@ -20,6 +20,23 @@ RunOutput::RunOutput(std::string directory, const fem::Problem& problem, const S
   for (const auto& r : problem.rigid_bodies) reaction_names_.push_back(r.name);
   for (const auto& name : reaction_names_)
     for (const char* c : {"fx", "fy", "fz", "mx", "my", "mz"}) columns.push_back(name + "." + c);
+  if (model.contact) {
+    for (const char* c : {"contact_pairs", "contact_area", "max_penetration", "mean_penetration", "contact_energy"})
+      columns.emplace_back(c);
+    const auto& names = model.contact_body_names;
+    const auto& penalty = model.contact->geometry().penalty;
+    for (Index a = 0; a < penalty.rows(); ++a)
+      for (Index b = a; b < penalty.cols(); ++b) {
+        if (penalty(a, b) <= 0) continue;
+        contact_columns_.emplace_back(a, b);
+        const std::string prefix = "contact." + names[static_cast<std::size_t>(a)] + "." + names[static_cast<std::size_t>(b)];
+        if (a == b) {
+          columns.push_back(prefix + ".force");
+        } else {
+          for (const char* c : {".fx", ".fy", ".fz"}) columns.push_back(prefix + c);
+        }
+      }
+  }
   steps_ = std::make_unique<io::CsvTable>(directory_ + "/steps.csv", columns);
   newton_ = std::make_unique<io::CsvTable>(
       directory_ + "/newton.csv",
@@ -42,6 +59,23 @@ void RunOutput::write_step(const solver::StepRecord& step, const fem::State& sta
   for (const auto& reaction : fem::compute_reactions(problem_, *model_.dofs, state, gradient)) {
     for (int k = 0; k < 3; ++k) row.emplace_back(reaction.force[k]);
     for (int k = 0; k < 3; ++k) row.emplace_back(reaction.moment[k]);
+  }
+  if (model_.contact) {
+    const contact::ContactStatistics c = model_.contact->statistics(state.x);
+    row.emplace_back(static_cast<long long>(c.pairs));
+    row.emplace_back(c.area);
+    row.emplace_back(c.max_penetration);
+    row.emplace_back(c.mean_penetration);
+    row.emplace_back(c.energy);
+    const Index bodies = model_.contact->num_bodies();
+    for (const auto& [a, b] : contact_columns_) {
+      const Vector3& f = c.body_pair_force[static_cast<std::size_t>(a * bodies + b)];
+      if (a == b) {
+        row.emplace_back(f.x());
+      } else {
+        for (int k = 0; k < 3; ++k) row.emplace_back(f[k]);
+      }
+    }
   }
   steps_->add_row(row);
   newton_->flush();
@@ -66,6 +100,12 @@ io::VtuData RunOutput::vtu_data(const fem::State& state) const {
   IndexVector rigid(problem_.mesh.num_tets());
   for (Index t = 0; t < problem_.mesh.num_tets(); ++t) rigid[t] = model_.tet_material[t] ? 0 : 1;
   data.int_cell_fields.emplace_back("rigid", rigid);
+  if (model_.contact) {
+    const contact::ContactStatistics c = model_.contact->statistics(state.x);
+    data.point_fields.push_back({"material_depth", MatrixX(model_.contact->geometry().depth)});
+    data.point_fields.push_back({"contact_force", MatrixX(c.nodal_force)});
+    data.point_fields.push_back({"contact_pressure", MatrixX(c.nodal_pressure)});
+  }
   return data;
 }
 

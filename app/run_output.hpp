@@ -2,9 +2,13 @@
 /// @file run_output.hpp
 /// What a static run writes into its output directory, every file atomically:
 ///   sinew.pvd              ParaView series of the increments
-///   vtu/increment_NNNN.vtu displacement, region, J, von Mises stress per increment
+///   vtu/increment_NNNN.vtu displacement, region, J, von Mises stress per increment; with contact
+///                          also material_depth, contact_force and contact_pressure per node
 ///   steps.csv              one row per accepted load step (lambda, Newton iterations, residual,
-///                          energy, reaction force and moment of every constraint)
+///                          energy, reaction force and moment of every constraint; with contact:
+///                          pairs, area, max and mean penetration, contact energy, the force on
+///                          body a from body b per pair "contact.<a>.<b>.f{x,y,z}" and, for
+///                          self-contact, half the sum of nodal force magnitudes "contact.<a>.<a>.force")
 ///   newton.csv             one row per Newton iteration
 ///   last_converged.vtu     on failure: the state the run could reach
 ///   summary.json           status, message, counts, time per phase
@@ -46,6 +50,7 @@ class RunOutput {
   std::unique_ptr<io::CsvTable> newton_;
   std::unique_ptr<io::PvdSeries> series_;
   std::vector<std::string> reaction_names_;
+  std::vector<std::pair<Index, Index>> contact_columns_;  ///< body pairs with contact, in column order
 };
 
 }  // namespace sinew::app

@@ -2,12 +2,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "run_output.hpp"
 #include "sinew/core/log.hpp"
 #include "sinew/io/progress.hpp"
+#include "sinew/scene/build_contact.hpp"
 #include "sinew/scene/build_problem.hpp"
 #include "static_model.hpp"
 
@@ -19,7 +21,18 @@ RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) 
 
   // Everything that can fail on bad input happens before the first file is written.
   const fem::Problem problem = scene::build_problem(scene);
-  const StaticModel model = make_static_model(problem, scene.solver);
+  std::optional<ContactInput> contact;
+  if (scene.contact.enabled) {
+    scene::ContactSetup setup = scene::build_contact(scene, problem);
+    const auto& penalty = setup.geometry.penalty;
+    for (Index a = 0; a < penalty.rows(); ++a)
+      for (Index b = a; b < penalty.cols(); ++b)
+        if (penalty(a, b) > 0)
+          logger().info("contact {} / {}: penalty {:.4g} (force/length^3)", setup.body_names[static_cast<std::size_t>(a)],
+                        setup.body_names[static_cast<std::size_t>(b)], penalty(a, b));
+    contact = ContactInput{std::move(setup.geometry), setup.options, std::move(setup.body_names)};
+  }
+  const StaticModel model = make_static_model(problem, scene.solver, contact ? &*contact : nullptr);
   logger().info("scene \"{}\": {} nodes, {} tets, {} unknowns, {} rigid bodies", scene.name, problem.mesh.num_nodes(),
                 problem.mesh.num_tets(), model.dofs->num_dofs(), problem.rigid_bodies.size());
 

@@ -6,7 +6,8 @@
 
 namespace sinew::app {
 
-StaticModel make_static_model(const fem::Problem& problem, const solver::StaticSolverOptions& options) {
+StaticModel make_static_model(const fem::Problem& problem, const solver::StaticSolverOptions& options,
+                              const ContactInput* contact) {
   StaticModel model;
   const auto& mesh = problem.mesh;
   model.tet_material.resize(static_cast<std::size_t>(mesh.num_tets()));
@@ -19,8 +20,13 @@ StaticModel make_static_model(const fem::Problem& problem, const solver::StaticS
   model.external = std::make_unique<fem::ExternalForceEnergy>(
       fem::lumped_masses(mesh.rest, mesh.tets, mesh.region, problem.region_density), problem.gravity,
       fem::Amplitude{}, problem.forces, mesh.num_nodes());
-  model.objective = std::make_unique<solver::Objective>(
-      *model.dofs, std::vector<Energy*>{model.elastic.get(), model.external.get()}, mesh.num_nodes());
+  std::vector<Energy*> terms{model.elastic.get(), model.external.get()};
+  if (contact) {
+    model.contact = std::make_unique<contact::ContactEnergy>(contact->geometry, contact->options);
+    model.contact_body_names = contact->body_names;
+    terms.push_back(model.contact.get());
+  }
+  model.objective = std::make_unique<solver::Objective>(*model.dofs, std::move(terms), mesh.num_nodes());
 
   const Vector3 extent = mesh.rest.colwise().maxCoeff() - mesh.rest.colwise().minCoeff();
   const double length = std::max(extent.norm(), 1e-300);

@@ -45,7 +45,7 @@ struct ContactGeometry {
 
 struct ContactOptions {
   ContactMethod method = ContactMethod::Area;
-  PairHessian hessian = PairHessian::GaussNewton;
+  PairHessian hessian = PairHessian::Exact;
 };
 
 /// Per-configuration contact figures (for logs and output).

@@ -4,6 +4,7 @@
 #include <array>
 
 #include "sinew/contact/dual.hpp"
+#include "sinew/contact/tape.hpp"
 
 namespace sinew::contact {
 namespace {
@@ -175,7 +176,17 @@ S point_integral_t(const PairGeometry& pair, const collision::CollocationPoints&
 }
 
 using D1 = Dual<kPairVariables>;
-using D2 = Dual2<kPairVariables>;
+using TS = TapeScalar<kPairVariables>;
+
+/// Exact gradient and Hessian of f<TapeScalar>() by reverse-over-forward differentiation.
+template <class F>
+double tape_hessian(F&& f, PairVector& gradient, PairMatrix& hessian) {
+  thread_local Tape<kPairVariables> tape;
+  const typename Tape<kPairVariables>::Scope scope(tape);
+  const TS I = f();
+  tape.gradient_and_hessian(I.node, gradient, hessian);
+  return I.v();
+}
 
 }  // namespace
 
@@ -191,12 +202,8 @@ double area_integral_gradient(const PairGeometry& pair, const collision::ClipPol
 
 double area_integral_hessian(const PairGeometry& pair, const collision::ClipPolygon& polygon, PairHessian kind,
                              PairVector& gradient, PairMatrix& hessian) {
-  if (kind == PairHessian::Exact) {
-    const D2 I = area_integral_t<D2>(pair, polygon);
-    gradient = I.d;
-    hessian = I.h;
-    return I.v;
-  }
+  if (kind == PairHessian::Exact)
+    return tape_hessian([&] { return area_integral_t<TS>(pair, polygon); }, gradient, hessian);
   // Gauss-Newton: per fan triangle, A/12 (a² + b² + c² + s²) -> A/6 (∇a∇aᵀ + ∇b∇bᵀ + ∇c∇cᵀ + ∇s∇sᵀ)
   // with the areas frozen (and clamped at 0, so the sum stays positive semi-definite).
   hessian.setZero();
@@ -241,12 +248,8 @@ double point_integral_gradient(const PairGeometry& pair, const collision::Colloc
 
 double point_integral_hessian(const PairGeometry& pair, const collision::CollocationPoints& points,
                               PairHessian kind, PairVector& gradient, PairMatrix& hessian) {
-  if (kind == PairHessian::Exact) {
-    const D2 I = point_integral_t<D2>(pair, points);
-    gradient = I.d;
-    hessian = I.h;
-    return I.v;
-  }
+  if (kind == PairHessian::Exact)
+    return tape_hessian([&] { return point_integral_t<TS>(pair, points); }, gradient, hessian);
   hessian.setZero();
   gradient.setZero();
   if (points.count == 0) return 0;

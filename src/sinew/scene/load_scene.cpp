@@ -64,6 +64,20 @@ class SceneReader {
       config.bodies.push_back(read_body(bodies[b], json_path_index("bodies", b), config));
     }
     check_body_names(config);
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const json& contact = bodies[b].at("contact");
+      if (!contact.contains("depth_nodes")) continue;
+      config.bodies[b].contact.depth_surface = BodyContactConfig::DepthSurface::Nodes;
+      const json& selectors = contact.at("depth_nodes");
+      for (std::size_t k = 0; k < selectors.size(); ++k) {
+        json selector = selectors[k];
+        selector["body"] = config.bodies[b].name;
+        config.bodies[b].contact.depth_nodes.push_back(read_selector(
+            selector,
+            json_path_index(json_path_key(json_path_key(json_path_index("bodies", b), "contact"), "depth_nodes"), k),
+            config));
+      }
+    }
 
     const json& conditions = scene.at("boundary_conditions");
     std::set<std::string> condition_names;
@@ -91,6 +105,7 @@ class SceneReader {
       config.loads.forces.push_back(std::move(f));
     }
 
+    if (scene.contains("contact")) config.contact = read_contact(scene.at("contact"), config);
     config.solver = read_solver(scene.at("solver"));
     config.output.vtu = scene.at("output").at("vtu").get<bool>();
     config.output.every = scene.at("output").at("every").get<int>();
@@ -238,10 +253,70 @@ class SceneReader {
     return region;
   }
 
+  ContactConfig read_contact(const json& j, const SceneConfig& config) {
+    ContactConfig contact;
+    contact.enabled = true;
+    contact.method = j.at("method").get<std::string>() == "point" ? contact::ContactMethod::Point
+                                                                  : contact::ContactMethod::Area;
+    contact.hessian = j.at("hessian").get<std::string>() == "exact" ? contact::PairHessian::Exact
+                                                                    : contact::PairHessian::GaussNewton;
+    if (j.contains("penalty")) contact.penalty = j.at("penalty").get<double>();
+    contact.penalty_scale = j.at("penalty_scale").get<double>();
+    contact.self_contact = j.at("self_contact").get<bool>();
+    std::vector<std::string> body_names;
+    for (const BodyConfig& body : config.bodies) body_names.push_back(body.name);
+    std::set<std::pair<std::string, std::string>> seen;
+    const json& pairs = j.at("pairs");
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const std::string path = json_path_index("contact.pairs", k);
+      ContactPairConfig pair;
+      const json& names = pairs[k].at("bodies");
+      pair.body_a = names[0].get<std::string>();
+      pair.body_b = names[1].get<std::string>();
+      bool known = true;
+      for (std::size_t i = 0; i < 2; ++i) {
+        const std::string name = names[i].get<std::string>();
+        if (std::find(body_names.begin(), body_names.end(), name) == body_names.end()) {
+          error(json_path_index(json_path_key(path, "bodies"), i),
+                "unknown body " + json(name).dump() + unknown_name_hint(name, body_names, "bodies"));
+          known = false;
+        }
+      }
+      if (pairs[k].contains("penalty")) pair.penalty = pairs[k].at("penalty").get<double>();
+      pair.enabled = pairs[k].at("enabled").get<bool>();
+      if (!pair.enabled && pair.penalty)
+        error(json_path_key(path, "penalty"), "a disabled pair has no penalty (remove one of the two)");
+      const auto key = std::minmax(pair.body_a, pair.body_b);
+      if (known && !seen.insert({key.first, key.second}).second)
+        error(json_path_key(path, "bodies"), "this pair of bodies is listed twice");
+      contact.pairs.push_back(std::move(pair));
+    }
+    return contact;
+  }
+
   BodyConfig read_body(const json& j, const std::string& path, const SceneConfig& config) {
     BodyConfig body;
     body.name = j.at("name").get<std::string>();
     body.mesh = read_mesh(j, path);
+    const json& contact = j.at("contact");
+    const std::string contact_path = json_path_key(path, "contact");
+    const int depth_sources = static_cast<int>(contact.contains("depth_face_set")) +
+                              static_cast<int>(contact.contains("depth_nodes")) +
+                              static_cast<int>(contact.contains("depth_region")) +
+                              static_cast<int>(contact.contains("depth_file"));
+    if (depth_sources > 1)
+      error(contact_path, "give at most one of \"depth_face_set\", \"depth_region\", \"depth_nodes\" and \"depth_file\"");
+    if (contact.contains("depth_face_set")) {
+      body.contact.depth_surface = BodyContactConfig::DepthSurface::FaceSet;
+      body.contact.depth_surface_name = contact.at("depth_face_set").get<std::string>();
+    } else if (contact.contains("depth_region")) {
+      body.contact.depth_surface = BodyContactConfig::DepthSurface::Region;
+      body.contact.depth_surface_name = contact.at("depth_region").get<std::string>();
+    } else if (contact.contains("depth_file")) {
+      body.contact.depth_file = resolve(contact.at("depth_file").get<std::string>());
+      if (!std::filesystem::exists(body.contact.depth_file))
+        error(json_path_key(contact_path, "depth_file"), "depth file not found: " + body.contact.depth_file);
+    }
     for (const auto& [name, region] : j.at("regions").items()) {
       body.regions[name] = read_region(region, json_path_key(json_path_key(path, "regions"), name), config);
     }

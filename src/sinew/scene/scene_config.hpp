@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sinew/contact/contact_energy.hpp"
 #include "sinew/fem/constraints_config.hpp"
 #include "sinew/material/material_spec.hpp"
 #include "sinew/mesh/generate.hpp"
@@ -35,13 +36,6 @@ struct RegionConfig {
   std::optional<Vector3> fiber_direction;  ///< overrides the material's fiber direction
 };
 
-struct BodyConfig {
-  std::string name;
-  MeshSourceConfig mesh;
-  /// Region name -> config. A mesh region without an entry uses the entry named "*" if any.
-  std::map<std::string, RegionConfig> regions;
-};
-
 /// Chooses nodes of one body.
 struct NodeSelector {
   enum class Kind { Set, Region, Box, Plane, All };
@@ -51,6 +45,25 @@ struct NodeSelector {
   Vector3 box_min = Vector3::Zero(), box_max = Vector3::Zero();  ///< Box, inclusive
   Vector3 point = Vector3::Zero(), normal = Vector3::UnitZ();    ///< Plane
   double tolerance = 1e-9;  ///< Plane: |n.(X-p)| <= tolerance; Box: padding (length)
+};
+
+/// How a body takes part in contact.
+struct BodyContactConfig {
+  /// Which boundary faces are the zero-depth surface from which material depth is measured.
+  enum class DepthSurface { Boundary, FaceSet, Region, Nodes };
+  DepthSurface depth_surface = DepthSurface::Boundary;
+  std::string depth_surface_name;  ///< FaceSet: face set name; Region: region name
+  /// Nodes: boundary faces whose three nodes are all chosen by one of these selectors.
+  std::vector<NodeSelector> depth_nodes;
+  std::string depth_file;          ///< nodal depths (one per node of the body's mesh), overrides the above
+};
+
+struct BodyConfig {
+  std::string name;
+  MeshSourceConfig mesh;
+  BodyContactConfig contact;
+  /// Region name -> config. A mesh region without an entry uses the entry named "*" if any.
+  std::map<std::string, RegionConfig> regions;
 };
 
 struct BoundaryConditionConfig {
@@ -76,6 +89,26 @@ struct LoadsConfig {
   std::vector<ForceConfig> forces;
 };
 
+/// Penalty between two named bodies (or of one body with itself).
+struct ContactPairConfig {
+  std::string body_a, body_b;
+  std::optional<double> penalty;  ///< force / length^3; absent: the automatic default
+  bool enabled = true;
+};
+
+/// Material-depth contact between all bodies (GUIDE.md section 1).
+struct ContactConfig {
+  bool enabled = false;  ///< true when the scene has a "contact" section
+  contact::ContactMethod method = contact::ContactMethod::Area;
+  contact::PairHessian hessian = contact::ContactOptions{}.hessian;
+  std::optional<double> penalty;  ///< global penalty (force / length^3); absent: automatic
+  /// Automatic penalty: penalty_scale * E / h, E the smaller initial Young's modulus of the two
+  /// bodies, h the smaller mean surface edge length (a 10 % strain then penetrates ~h/100·10/scale).
+  double penalty_scale = 10;
+  bool self_contact = true;
+  std::vector<ContactPairConfig> pairs;
+};
+
 struct OutputConfig {
   bool vtu = true;        ///< write a .vtu per output step and a .pvd series
   int every = 1;          ///< write every n-th increment (the last one always)
@@ -90,6 +123,7 @@ struct SceneConfig {
   std::vector<BodyConfig> bodies;
   std::vector<BoundaryConditionConfig> boundary_conditions;
   LoadsConfig loads;
+  ContactConfig contact;
   solver::StaticSolverOptions solver;
   OutputConfig output;
 };

@@ -331,6 +331,64 @@ SchemaNode body_schema() {
                      }))
               .required()
               .items(1),
+          object("contact",
+                 "how this body's material depth is defined (used when the scene has a \"contact\" section); by "
+                 "default the depth of a node is its rest distance to the body's whole boundary",
+                 {
+                     string("depth_face_set",
+                            "measure depth from this face set only (a mesh face set of the body, or "
+                            "\"<region>.surface\" of a generated part)")
+                         .non_empty(),
+                     string("depth_region",
+                            "measure depth from the boundary faces of the tets of this region only")
+                         .non_empty(),
+                     array("depth_nodes",
+                           "measure depth from the boundary faces whose three nodes are all chosen by one of these "
+                           "selectors (e.g. a plane: only the face that touches; symmetry planes and free sides then "
+                           "do not count)",
+                           ref("", "a node selector (its \"body\" is this body)", "node_selector"))
+                         .items(1),
+                     string("depth_file",
+                            "nodal depths instead (text: one number per node of the body's mesh, in mesh order; "
+                            "relative paths start at the scene file's directory)")
+                         .non_empty(),
+                 })
+              .fallback(json::object()),
+      });
+}
+
+SchemaNode contact_schema() {
+  const ContactConfig defaults;
+  return object(
+      "contact",
+      "material-depth contact between all bodies, self-contact included (GUIDE.md section 1): the energy "
+      "(penalty/2) * integral of depth^2 over every boundary-triangle / tet intersection. Omit for no contact.",
+      {
+          string("method", "\"area\": exact integral over triangle-tet intersections (continuous forces); "
+                           "\"point\": the seed's collocation at triangle vertices (baseline)")
+              .allowed({"area", "point"})
+              .fallback("area"),
+          string("hessian", "contact stiffness: \"gauss-newton\" (positive semi-definite) or \"exact\"")
+              .allowed({"gauss-newton", "exact"})
+              .fallback(defaults.hessian == contact::PairHessian::Exact ? "exact" : "gauss-newton"),
+          number("penalty",
+                 "penalty for every pair of bodies (force / length^3: a penetration g meets a pressure of about "
+                 "penalty * g); default: penalty_scale * E / h per pair of bodies")
+              .above(0),
+          number("penalty_scale",
+                 "automatic penalty = penalty_scale * E / h, E the smaller initial Young's modulus of the two bodies "
+                 "(rigid bodies take the other's), h the smaller mean boundary edge length")
+              .above(0)
+              .fallback(defaults.penalty_scale),
+          boolean("self_contact", "a body's surface may also penetrate the same body").fallback(defaults.self_contact),
+          array("pairs", "per pair of bodies: a penalty of its own, or no contact",
+                object("", "one pair of bodies (the same name twice for self-contact)",
+                       {
+                           array("bodies", "two body names", string("", "body name").non_empty()).required().items(2, 2),
+                           number("penalty", "penalty of this pair (force / length^3)").above(0),
+                           boolean("enabled", "false: these bodies do not touch").fallback(true),
+                       }))
+              .fallback(json::array()),
       });
 }
 
@@ -475,6 +533,7 @@ Schema build_scene_schema() {
                            array("boundary_conditions", "constraints on nodes", boundary_condition_schema())
                                .fallback(json::array()),
                            loads_schema(),
+                           contact_schema(),
                            solver_schema(),
                            output_schema(),
                        });

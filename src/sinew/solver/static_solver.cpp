@@ -72,7 +72,10 @@ StaticResult solve_static(Objective& objective, const StaticSolverOptions& optio
   objective.set_load_parameter(0.0);
   objective.begin_step(current);
   {
-    const NewtonResult newton = newton_solve(objective, current, options.newton, *linear, K, context, result.times);
+    // The initial state may start deeply interpenetrated (contact pushes it apart): a larger budget.
+    NewtonOptions initial = options.newton;
+    initial.max_iterations = std::max(4 * initial.max_iterations, 100);
+    const NewtonResult newton = newton_solve(objective, current, initial, *linear, K, context, result.times);
     result.newton_iterations += newton.iterations;
     if (!newton.converged) {
       result.message = fmt::format("the initial state (lambda = 0) has no equilibrium the solver could find: {}",

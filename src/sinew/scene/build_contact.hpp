@@ -1,0 +1,34 @@
+#pragma once
+/// @file build_contact.hpp
+/// SceneConfig + fem::Problem -> the contact module's plain input: every body's boundary
+/// triangles and tets, the nodal material depths (from each body's zero-depth surface, or a
+/// depth file), and the penalty of every pair of bodies (explicit, or the automatic default).
+
+#include <string>
+#include <vector>
+
+#include "sinew/contact/contact_energy.hpp"
+#include "sinew/fem/problem.hpp"
+#include "sinew/scene/scene_config.hpp"
+
+namespace sinew::scene {
+
+struct ContactSetup {
+  contact::ContactGeometry geometry;
+  contact::ContactOptions options;
+  std::vector<std::string> body_names;  ///< index = body id in the geometry
+  std::vector<double> body_young_modulus;  ///< initial E per body (+inf for all-rigid bodies)
+  std::vector<double> body_edge_length;    ///< mean boundary edge length per body (length)
+};
+
+/// Requires scene.contact.enabled. Throws InputError, each message naming the config path, for:
+/// a depth face set or region the body does not have, a depth file that cannot be read, has
+/// the wrong count of numbers or a negative/non-finite value, and a pair of all-rigid bodies
+/// without an explicit penalty.
+ContactSetup build_contact(const SceneConfig& scene, const fem::Problem& problem);
+
+/// Nodal depths from a text file: whitespace-separated numbers, `expected` of them, each
+/// finite and >= 0; '#' starts a comment. Throws InputError naming the file and the problem.
+VectorX read_depth_file(const std::string& path, Index expected);
+
+}  // namespace sinew::scene

@@ -1,0 +1,173 @@
+/// @file test_build_contact.cpp
+/// The scene's "contact" section and per-body depth options -> contact::ContactGeometry:
+/// depths from chosen surfaces or a file, penalties (automatic, global, per pair), and the
+/// errors a user gets for a bad set-up.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "scene/scene_test_support.hpp"
+#include "sinew/core/error.hpp"
+#include "sinew/scene/build_contact.hpp"
+#include "sinew/scene/build_problem.hpp"
+#include "sinew/scene/load_scene.hpp"
+
+namespace sinew::scene {
+namespace {
+
+using nlohmann::json;
+using ::testing::HasSubstr;
+
+/// A soft box [0,1]^2 x [0,0.5] and a rigid plate below it.
+json contact_scene() {
+  return json::parse(R"({
+    "units": "m, N, Pa",
+    "materials": {"gel": {"law": "neo-hookean", "mu": 1.0, "lambda": 10.0}},
+    "bodies": [
+      {"name": "box",
+       "mesh": {"generate": {"element_size": 0.25, "parts": [
+         {"region": "gel", "shape": {"box": {"min": [0, 0, 0], "max": [1, 1, 0.5]}}}]}},
+       "regions": {"gel": {"material": "gel"}}},
+      {"name": "plate",
+       "mesh": {"generate": {"element_size": 0.5, "parts": [
+         {"region": "plate", "shape": {"box": {"min": [-1, -1, -1], "max": [2, 2, 0]}}}]}},
+       "regions": {"plate": {"rigid": "fixed"}}}
+    ],
+    "contact": {}
+  })");
+}
+
+ContactSetup build(const json& scene_json) {
+  const SceneConfig scene = parse_scene(scene_json, "");
+  const fem::Problem problem = build_problem(scene);
+  return build_contact(scene, problem);
+}
+
+std::string build_contact_error(const json& scene_json) {
+  try {
+    build(scene_json);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(BuildContact, DepthIsTheRestDistanceToTheBoundaryAndPenaltyFollowsStiffnessAndSize) {
+  const ContactSetup setup = build(contact_scene());
+  const auto& g = setup.geometry;
+  ASSERT_EQ(setup.body_names, (std::vector<std::string>{"box", "plate"}));
+  const SceneConfig scene = parse_scene(contact_scene(), "");
+  const fem::Problem problem = build_problem(scene);
+  const auto& box = problem.bodies[0];
+  for (Index v = box.first_node; v < box.first_node + box.num_nodes; ++v) {
+    const Vector3 X = problem.mesh.rest.row(v);
+    const double exact = std::min({X.x(), 1 - X.x(), X.y(), 1 - X.y(), X.z(), 0.5 - X.z()});
+    EXPECT_NEAR(g.depth[v], exact, 1e-12) << "node " << v;
+  }
+  // E = mu (3 lambda + 2 mu) / (lambda + mu) = 32/11; the plate is rigid, so the box's E counts.
+  const double E = 32.0 / 11.0;
+  EXPECT_NEAR(setup.body_young_modulus[0], E, 1e-12);
+  EXPECT_TRUE(std::isinf(setup.body_young_modulus[1]));
+  const double h = std::min(setup.body_edge_length[0], setup.body_edge_length[1]);
+  EXPECT_NEAR(g.penalty(0, 1), 10 * E / h, 1e-12 * g.penalty(0, 1));
+  EXPECT_EQ(g.penalty(0, 1), g.penalty(1, 0));
+  EXPECT_GT(g.penalty(0, 0), 0);   // self-contact of the soft box
+  EXPECT_EQ(g.penalty(1, 1), 0.0); // a rigid body cannot penetrate itself
+}
+
+TEST(BuildContact, PairsOverrideTheGlobalPenaltyAndCanSwitchContactOff) {
+  json scene = contact_scene();
+  scene["contact"] = json::parse(R"({"penalty": 7, "self_contact": false,
+      "pairs": [{"bodies": ["plate", "box"], "penalty": 3}]})");
+  ContactSetup setup = build(scene);
+  EXPECT_EQ(setup.geometry.penalty(0, 1), 3.0);
+  EXPECT_EQ(setup.geometry.penalty(0, 0), 0.0);
+  scene["contact"] = json::parse(R"({"pairs": [{"bodies": ["box", "plate"], "enabled": false}]})");
+  setup = build(scene);
+  EXPECT_EQ(setup.geometry.penalty(0, 1), 0.0);
+}
+
+TEST(BuildContact, DepthFromChosenFacesOnly) {
+  json scene = contact_scene();
+  scene["bodies"][0]["contact"] =
+      json::parse(R"({"depth_nodes": [{"plane": {"point": [0, 0, 0], "normal": [0, 0, 1], "tolerance": 1e-9}}]})");
+  const ContactSetup setup = build(scene);
+  const SceneConfig config = parse_scene(scene, "");
+  const fem::Problem problem = build_problem(config);
+  const auto& box = problem.bodies[0];
+  for (Index v = box.first_node; v < box.first_node + box.num_nodes; ++v)
+    EXPECT_NEAR(setup.geometry.depth[v], problem.mesh.rest(v, 2), 1e-12) << "node " << v;
+}
+
+TEST(BuildContact, DepthFromAFile) {
+  json scene = contact_scene();
+  const SceneConfig config = parse_scene(scene, "");
+  const fem::Problem problem = build_problem(config);
+  const Index nodes = problem.bodies[0].num_nodes;
+  const auto path = std::filesystem::temp_directory_path() / "sinew_test_depth.txt";
+  {
+    std::ofstream out(path);
+    out << "# depth per node\n";
+    for (Index v = 0; v < nodes; ++v) out << 0.5 * v << (v % 7 == 6 ? "\n" : " ");
+  }
+  scene["bodies"][0]["contact"] = {{"depth_file", path.string()}};
+  const ContactSetup setup = build(scene);
+  for (Index v = 0; v < nodes; ++v) EXPECT_EQ(setup.geometry.depth[problem.bodies[0].first_node + v], 0.5 * v);
+  {
+    std::ofstream out(path);
+    out << "1 2 -3\n";
+  }
+  const std::string message = build_contact_error(scene);
+  EXPECT_THAT(message, HasSubstr("bodies[0].contact.depth_file"));
+  EXPECT_THAT(message, HasSubstr("line 1: depth -3 must be finite and >= 0"));
+  {
+    std::ofstream out(path);
+    out << "1 2 3\n";
+  }
+  EXPECT_THAT(build_contact_error(scene), HasSubstr("has 3 depths, the body's mesh has " + std::to_string(nodes)));
+  {
+    std::ofstream out(path);
+    out << "1 nan\n";
+  }
+  EXPECT_THAT(build_contact_error(scene), HasSubstr("must be finite"));
+  std::filesystem::remove(path);
+}
+
+TEST(BuildContact, BadSetUpsAreReportedWithTheirPath) {
+  json scene = contact_scene();
+  scene["bodies"][0]["contact"] = {{"depth_face_set", "nope"}};
+  EXPECT_THAT(build_contact_error(scene),
+              HasSubstr("bodies[0].contact.depth_face_set: body \"box\" has no face set \"nope\" (it has: gel.surface)"));
+  scene["bodies"][0]["contact"] = {{"depth_region", "bone"}};
+  EXPECT_THAT(build_contact_error(scene), HasSubstr("bodies[0].contact.depth_region: body \"box\" has no region \"bone\""));
+  // Two rigid bodies have no automatic penalty.
+  scene = contact_scene();
+  scene["bodies"][0]["regions"]["gel"] = {{"rigid", "fixed"}};
+  scene["contact"] = json::parse(R"({"pairs": [{"bodies": ["box", "plate"]}]})");
+  EXPECT_THAT(build_contact_error(scene), HasSubstr("contact.pairs[0]: bodies \"box\" and \"plate\" are both rigid"));
+}
+
+TEST(BuildContact, SceneErrorsNameTheEntry) {
+  json scene = contact_scene();
+  scene["contact"] = json::parse(R"({"method": "points", "penalty": -1})");
+  const std::string schema_errors = testing::parse_error(scene, "");
+  EXPECT_THAT(schema_errors, HasSubstr("contact.method: must be one of \"area\", \"point\""));
+  EXPECT_THAT(schema_errors, HasSubstr("contact.penalty: must be > 0"));
+  scene["contact"] = json::parse(R"({
+      "pairs": [{"bodies": ["box", "plates"]}, {"bodies": ["box", "plate"], "enabled": false, "penalty": 2}]})");
+  const std::string message = testing::parse_error(scene, "");
+  EXPECT_THAT(message, HasSubstr("contact.pairs[0].bodies[1]: unknown body \"plates\""));
+  EXPECT_THAT(message, HasSubstr("did you mean"));
+  EXPECT_THAT(message, HasSubstr("a disabled pair has no penalty"));
+  scene = contact_scene();
+  scene["bodies"][0]["contact"] = {{"depth_file", "missing.txt"}, {"depth_region", "gel"}};
+  const std::string both = testing::parse_error(scene, "/nonexistent");
+  EXPECT_THAT(both, HasSubstr("give at most one of"));
+}
+
+}  // namespace
+}  // namespace sinew::scene
