@@ -84,6 +84,9 @@ void ContactEnergy::require_current(const Positions& x) const {
 }
 
 void ContactEnergy::begin_step(const Positions& x) {
+  if (x.rows() != geometry_.depth.size())
+    throw std::invalid_argument(fmt::format("ContactEnergy::begin_step: x has {} rows, the contact geometry {} nodes",
+                                            x.rows(), geometry_.depth.size()));
   tree_.build(collision::tet_boxes(x, geometry_.tets));
   tree_built_ = true;
   current_x_.resize(0, 3);  // force the next update() to recompute the pairs

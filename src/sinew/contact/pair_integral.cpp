@@ -175,6 +175,14 @@ S point_integral_t(const PairGeometry& pair, const collision::CollocationPoints&
   return total;
 }
 
+/// A zero-area triangle (collinear or coincident vertices) has no surface to integrate over and
+/// no normal to differentiate: its pairs contribute nothing.
+bool degenerate_triangle(const PairGeometry& pair) {
+  const Vector3 a = pair.triangle.row(0), b = pair.triangle.row(1), c = pair.triangle.row(2);
+  const double scale = (b - a).squaredNorm() + (c - a).squaredNorm() + (c - b).squaredNorm();
+  return !((b - a).cross(c - a).norm() > 1e-12 * scale);
+}
+
 using D1 = Dual<kPairVariables>;
 using TS = TapeScalar<kPairVariables>;
 
@@ -191,10 +199,15 @@ double tape_hessian(F&& f, PairVector& gradient, PairMatrix& hessian) {
 }  // namespace
 
 double area_integral(const PairGeometry& pair, const collision::ClipPolygon& polygon) {
+  if (degenerate_triangle(pair)) return 0;
   return area_integral_t<double>(pair, polygon);
 }
 
 double area_integral_gradient(const PairGeometry& pair, const collision::ClipPolygon& polygon, PairVector& gradient) {
+  if (degenerate_triangle(pair)) {
+    gradient.setZero();
+    return 0;
+  }
   const D1 I = area_integral_t<D1>(pair, polygon);
   gradient = I.d;
   return I.v;
@@ -202,6 +215,11 @@ double area_integral_gradient(const PairGeometry& pair, const collision::ClipPol
 
 double area_integral_hessian(const PairGeometry& pair, const collision::ClipPolygon& polygon, PairHessian kind,
                              PairVector& gradient, PairMatrix& hessian) {
+  if (degenerate_triangle(pair)) {
+    gradient.setZero();
+    hessian.setZero();
+    return 0;
+  }
   if (kind == PairHessian::Exact)
     return tape_hessian([&] { return area_integral_t<TS>(pair, polygon); }, gradient, hessian);
   // Gauss-Newton: per fan triangle, A/12 (a² + b² + c² + s²) -> A/6 (∇a∇aᵀ + ∇b∇bᵀ + ∇c∇cᵀ + ∇s∇sᵀ)
@@ -224,7 +242,7 @@ double area_integral_hessian(const PairGeometry& pair, const collision::ClipPoly
 
 PolygonMoments area_moments(const PairGeometry& pair, const collision::ClipPolygon& polygon) {
   PolygonMoments m;
-  if (polygon.count < 3) return m;
+  if (polygon.count < 3 || degenerate_triangle(pair)) return m;
   const Fan<double> fan = make_fan(make_nodes<double>(pair), pair.depth, polygon);
   for (int k = 0; k < fan.count; ++k) m.max_depth = std::max(m.max_depth, fan.g[static_cast<std::size_t>(k)]);
   for (int j = 1; j + 1 < fan.count; ++j) {
@@ -236,11 +254,16 @@ PolygonMoments area_moments(const PairGeometry& pair, const collision::ClipPolyg
 }
 
 double point_integral(const PairGeometry& pair, const collision::CollocationPoints& points) {
+  if (degenerate_triangle(pair)) return 0;
   return point_integral_t<double>(pair, points);
 }
 
 double point_integral_gradient(const PairGeometry& pair, const collision::CollocationPoints& points,
                                PairVector& gradient) {
+  if (degenerate_triangle(pair)) {
+    gradient.setZero();
+    return 0;
+  }
   const D1 I = point_integral_t<D1>(pair, points);
   gradient = I.d;
   return I.v;
@@ -248,6 +271,11 @@ double point_integral_gradient(const PairGeometry& pair, const collision::Colloc
 
 double point_integral_hessian(const PairGeometry& pair, const collision::CollocationPoints& points,
                               PairHessian kind, PairVector& gradient, PairMatrix& hessian) {
+  if (degenerate_triangle(pair)) {
+    gradient.setZero();
+    hessian.setZero();
+    return 0;
+  }
   if (kind == PairHessian::Exact)
     return tape_hessian([&] { return point_integral_t<TS>(pair, points); }, gradient, hessian);
   hessian.setZero();
@@ -269,7 +297,7 @@ double point_integral_hessian(const PairGeometry& pair, const collision::Colloca
 
 PolygonMoments point_moments(const PairGeometry& pair, const collision::CollocationPoints& points) {
   PolygonMoments m;
-  if (points.count == 0) return m;
+  if (points.count == 0 || degenerate_triangle(pair)) return m;
   const Nodes<double> n = make_nodes<double>(pair);
   const DepthField<double> field = depth_field(n, pair.depth);
   const Vec<double> normal = cross(n.tri[1] - n.tri[0], n.tri[2] - n.tri[0]);

@@ -1,0 +1,598 @@
+// Evidence for the contact energy of GUIDE.md section 3 at the level of ContactEnergy: the force
+// along a sweep of one body through another is continuous for the area method (its largest jump
+// between neighbouring samples shrinks with the spacing) and not for point collocation; the
+// energy is continuous; self-contact of a bent bar; zero depths and zero penalties; the
+// statistics against independent computations; the bookkeeping contract (pattern revisions,
+// missing Hessian blocks, stale positions).
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <set>
+#include <stdexcept>
+#include <vector>
+
+#include "sinew/collision/clip_triangle_tet.hpp"
+#include "sinew/collision/material_depth.hpp"
+#include "sinew/collision/polygon_quadrature.hpp"
+#include "sinew/contact/contact_energy.hpp"
+#include "support/box_mesh.hpp"
+#include "support/contact_fixtures.hpp"
+#include "support/fd_check.hpp"
+
+namespace sinew::contact {
+namespace {
+
+namespace st = sinew::testing;
+
+const char* method_name(ContactMethod m) { return m == ContactMethod::Area ? "area" : "point"; }
+
+NodalVectors gradient_at(ContactEnergy& energy, const Positions& x) {
+  energy.update(x);
+  NodalVectors g = NodalVectors::Zero(x.rows(), 3);
+  energy.add_gradient(x, g);
+  return g;
+}
+
+MatrixX hessian_at(ContactEnergy& energy, const Positions& x) {
+  energy.update(x);
+  std::vector<std::pair<Index, Index>> pairs;
+  energy.hessian_pattern(pairs);
+  BlockSparseMatrix H;
+  H.set_pattern(static_cast<Index>(x.rows()), pairs);
+  energy.add_hessian(x, H);
+  return H.to_dense();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sweep of body 1 of two_boxes through body 0 along a straight line
+
+/// Body 1 (a rotated copy of the unit box, 2 x 2 x 2 cubes) translated along a straight path from
+/// `from` to `to` (offsets), s in [0, 1]; deep enough that its vertices cross many of body 0's
+/// tets (and body 0's vertices cross body 1's tets).
+class Sweep {
+ public:
+  explicit Sweep(ContactMethod method)
+      : base_(st::two_boxes(2, Vector3::Zero(), 0.3, 1.0, /*self_contact=*/false)),
+        energy_(base_.geometry, {method, PairHessian::GaussNewton}),
+        body1_(static_cast<Index>(base_.x.rows() / 2)) {}
+
+  struct Sample {
+    Vector3 force;  ///< net contact force on body 1 (force unit)
+    double energy;
+  };
+
+  Sample at(double s) {
+    Positions x = base_.x;
+    const Vector3 offset = from_ + s * (to_ - from_);
+    for (Index a = body1_; a < x.rows(); ++a) x.row(a) += offset.transpose();
+    energy_.update(x);
+    Sample out;
+    out.energy = energy_.value(x);
+    NodalVectors g = NodalVectors::Zero(x.rows(), 3);
+    energy_.add_gradient(x, g);
+    out.force = -g.bottomRows(x.rows() - body1_).colwise().sum().transpose();
+    return out;
+  }
+
+  struct Jumps {
+    double force = 0;   ///< max |F(s_k+1) - F(s_k)|
+    double energy = 0;  ///< max |E(s_k+1) - E(s_k)|
+    double where = 0;   ///< s_k of the largest force jump
+    double max_force = 0;
+  };
+
+  /// K + 1 samples s_k = k / K.
+  Jumps jumps(int K) {
+    Jumps j;
+    Sample previous = at(0.0);
+    for (int k = 1; k <= K; ++k) {
+      const Sample next = at(static_cast<double>(k) / K);
+      const double df = (next.force - previous.force).norm();
+      if (df > j.force) {
+        j.force = df;
+        j.where = static_cast<double>(k - 1) / K;
+      }
+      j.energy = std::max(j.energy, std::abs(next.energy - previous.energy));
+      j.max_force = std::max(j.max_force, next.force.norm());
+      previous = next;
+    }
+    return j;
+  }
+
+  /// Starting from [s0, s0 + width], halves the interval `steps` times, keeping the half with
+  /// the larger force jump; returns the force jump over the final interval.
+  double bisected_jump(double s0, double width, int steps) {
+    double a = s0, b = s0 + width;
+    Sample fa = at(a), fb = at(b);
+    for (int i = 0; i < steps; ++i) {
+      const double m = 0.5 * (a + b);
+      const Sample fm = at(m);
+      if ((fm.force - fa.force).norm() >= (fb.force - fm.force).norm()) {
+        b = m;
+        fb = fm;
+      } else {
+        a = m;
+        fa = fm;
+      }
+    }
+    return (fb.force - fa.force).norm();
+  }
+
+ private:
+  st::TwoBoxes base_;
+  ContactEnergy energy_;
+  Index body1_;
+  Vector3 from_{1.0, 0.13, 0.07};
+  Vector3 to_{0.1, 0.1, 0.02};
+};
+
+TEST(ContactContinuity, AreaForceJumpsShrinkWithTheSpacingPointForceJumpsDoNot) {
+  const std::array<int, 3> Ks{100, 200, 400};
+  std::array<Sweep::Jumps, 3> area{}, point{};
+  Sweep area_sweep(ContactMethod::Area), point_sweep(ContactMethod::Point);
+  for (std::size_t i = 0; i < Ks.size(); ++i) {
+    area[i] = area_sweep.jumps(Ks[i]);
+    point[i] = point_sweep.jumps(Ks[i]);
+  }
+  const auto precision = std::cout.precision(4);
+  for (std::size_t i = 0; i < Ks.size(); ++i)
+    std::cout << "[sweep] K=" << Ks[i] << "  max force jump: area " << area[i].force << " (at s=" << area[i].where
+              << "), point " << point[i].force << " (at s=" << point[i].where << ");  max |F|: area "
+              << area[i].max_force << ", point " << point[i].max_force << "\n";
+  // Both sweeps see real contact forces.
+  EXPECT_GT(area[2].max_force, 0.05);
+  EXPECT_GT(point[2].max_force, 0.05);
+  // Area: continuous force, the largest jump halves with the spacing (Lipschitz).
+  EXPECT_LT(area[1].force, 0.6 * area[0].force);
+  EXPECT_LT(area[2].force, 0.6 * area[1].force);
+  EXPECT_LT(area[2].force, 0.35 * area[0].force);
+  // Point collocation: the largest jump does not shrink (a discontinuity), and it is far larger
+  // than the area method's at the same spacing.
+  EXPECT_GT(point[2].force, 0.6 * point[0].force);
+  EXPECT_GT(point[2].force, 0.6 * point[1].force);
+  EXPECT_GT(point[2].force, 10 * area[2].force);
+
+  // Zoom in on the largest jump at K = 400: 30 bisections (interval ~1e-12) keep the point
+  // method's jump; the area method's jump vanishes.
+  const double width = 1.0 / Ks[2];
+  const double point_zoom = point_sweep.bisected_jump(point[2].where, width, 30);
+  const double area_zoom = area_sweep.bisected_jump(area[2].where, width, 30);
+  std::cout << "[sweep] after 30 bisections of the largest K=400 interval: point jump " << point_zoom
+            << ", area jump " << area_zoom << "\n";
+  std::cout.precision(precision);
+  EXPECT_GT(point_zoom, 0.5 * point[2].force);
+  EXPECT_LT(area_zoom, 1e-6 * area[2].max_force);
+}
+
+TEST(ContactContinuity, AreaEnergyIsContinuousAlongTheSweep) {
+  Sweep sweep(ContactMethod::Area);
+  const std::array<int, 3> Ks{100, 200, 400};
+  std::array<Sweep::Jumps, 3> j{};
+  for (std::size_t i = 0; i < Ks.size(); ++i) j[i] = sweep.jumps(Ks[i]);
+  std::cout << "[sweep] area, max |E(s_k+1) - E(s_k)|: K=100 " << j[0].energy << ", K=200 " << j[1].energy
+            << ", K=400 " << j[2].energy << "\n";
+  EXPECT_GT(j[0].energy, 0);
+  EXPECT_LT(j[1].energy, 0.6 * j[0].energy);
+  EXPECT_LT(j[2].energy, 0.6 * j[1].energy);
+  // The energy's slope along the path is the force: |ΔE| <= max |F| |Δoffset|.
+  const double path = (Vector3(1.0, 0.13, 0.07) - Vector3(0.1, 0.1, 0.02)).norm();
+  for (std::size_t i = 0; i < Ks.size(); ++i) EXPECT_LE(j[i].energy, 1.0001 * j[i].max_force * path / Ks[i]);
+}
+
+// Known defect (reported, not fixed here): a surface triangle lying exactly in the plane of a
+// face shared by two tets is clipped by both closed tets and integrated twice, and a collocation
+// point on a shared face, edge or node is counted once per tet that contains it. Body 1 shifted
+// by exactly one cell of body 0's grid doubles the area energy and multiplies the point energy
+// by 24 (and the point method's net force drops to zero); a shift of 1e-9 more gives the
+// expected values. Enable once each point of a triangle is counted in one tet only.
+TEST(ContactContinuity, DISABLED_SurfaceOnSharedTetFacesIsCountedOnce) {
+  for (const ContactMethod method : {ContactMethod::Area, ContactMethod::Point}) {
+    const auto aligned = st::two_boxes(2, Vector3(0.5, 0.5, 0.5), 0.0, 1.0, false);
+    const auto nudged = st::two_boxes(2, Vector3(0.5 + 1e-9, 0.5 + 2e-9, 0.5 + 3e-9), 0.0, 1.0, false);
+    ContactEnergy a(aligned.geometry, {method, PairHessian::GaussNewton});
+    ContactEnergy b(nudged.geometry, {method, PairHessian::GaussNewton});
+    a.update(aligned.x);
+    b.update(nudged.x);
+    const double ea = a.value(aligned.x), eb = b.value(nudged.x);
+    EXPECT_NEAR(ea, eb, 1e-6 * eb) << method_name(method);
+    const Index na = aligned.x.rows() / 2;
+    const Vector3 fa = gradient_at(a, aligned.x).bottomRows(na).colwise().sum().transpose();
+    const Vector3 fb = gradient_at(b, nudged.x).bottomRows(na).colwise().sum().transpose();
+    EXPECT_LT((fa - fb).norm(), 1e-6 * fb.norm()) << method_name(method);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Self-contact
+
+/// A bar of nx x 2 x 2 cubes, [0, L] x [0, h] x [0, h] at rest, wound into a helical ring of
+/// more than one turn so that its end penetrates its start: (x, y, z) -> ((R + y) cos θ,
+/// (R + y) sin θ, z + c θ), θ = α x, α L = 2π + 0.7, the pitch c lifting one turn by h / 3.
+struct BentBar {
+  Positions x;
+  ContactGeometry geometry;
+  double length = 0;
+  Positions rest;
+};
+
+BentBar bent_bar(double penalty) {
+  const int nx = 16;
+  const double L = 10.0, h = 0.5, R = 1.5;
+  const mesh::TetMesh bar = st::box_mesh(nx, 2, 2, Vector3::Zero(), Vector3(L, h, h));
+  BentBar out;
+  out.length = L;
+  out.rest = bar.rest;
+  const double alpha = (2 * std::numbers::pi + 0.7) / L, c = (h / 3) / (2 * std::numbers::pi);
+  out.x.resize(bar.rest.rows(), 3);
+  for (Index a = 0; a < bar.rest.rows(); ++a) {
+    const double theta = alpha * bar.rest(a, 0), r = R + bar.rest(a, 1);
+    out.x.row(a) << r * std::cos(theta), r * std::sin(theta), bar.rest(a, 2) + c * theta;
+  }
+  auto& g = out.geometry;
+  g.surface = mesh::boundary_triangles(bar.tets);
+  g.surface_body = IndexVector::Zero(g.surface.rows());
+  g.tets = bar.tets;
+  g.tet_body = IndexVector::Zero(g.tets.rows());
+  std::vector<Index> nodes(static_cast<std::size_t>(bar.rest.rows()));
+  for (Index a = 0; a < bar.rest.rows(); ++a) nodes[static_cast<std::size_t>(a)] = a;
+  g.depth = collision::material_depth(bar.rest, g.surface, nodes);
+  g.penalty = MatrixX::Constant(1, 1, penalty);
+  return out;
+}
+
+class SelfContact : public ::testing::TestWithParam<ContactMethod> {};
+
+TEST_P(SelfContact, BentBarEndPenetratingItsStart) {
+  const BentBar bar = bent_bar(5.0);
+  ContactEnergy energy(bar.geometry, {GetParam(), PairHessian::Exact});
+  energy.update(bar.x);
+  const auto pairs = energy.active_pairs();
+  ASSERT_FALSE(pairs.empty());
+  const double value = energy.value(bar.x);
+  EXPECT_GT(value, 0);
+  // No pair shares a node, and every pair joins the two ends of the bar (nothing spurious
+  // between neighbouring elements).
+  const auto& g = bar.geometry;
+  for (const auto& [f, t] : pairs) {
+    double tri_x = 0, tet_x = 0;
+    for (int i = 0; i < 3; ++i) {
+      for (int k = 0; k < 4; ++k) EXPECT_NE(g.surface(f, i), g.tets(t, k)) << "pair " << f << ", " << t;
+      tri_x += bar.rest(g.surface(f, i), 0) / 3;
+    }
+    for (int k = 0; k < 4; ++k) tet_x += bar.rest(g.tets(t, k), 0) / 4;
+    EXPECT_GT(std::abs(tri_x - tet_x), 0.5 * bar.length) << "pair " << f << ", " << t;
+  }
+  // The gradient is the exact gradient of the total energy: finite differences in every
+  // coordinate of every node of an active pair; the gradient is exactly 0 at the other nodes.
+  const NodalVectors grad = gradient_at(energy, bar.x);
+  std::set<Index> involved;
+  for (const auto& [f, t] : pairs) {
+    for (int i = 0; i < 3; ++i) involved.insert(g.surface(f, i));
+    for (int k = 0; k < 4; ++k) involved.insert(g.tets(t, k));
+  }
+  for (Index a = 0; a < bar.x.rows(); ++a) {
+    if (involved.count(a) == 0) {
+      EXPECT_EQ(grad.row(a).norm(), 0.0) << "node " << a;
+    }
+  }
+  const std::vector<Index> nodes(involved.begin(), involved.end());
+  Eigen::VectorXd x0(3 * static_cast<Index>(nodes.size())), analytic(x0.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      x0[static_cast<Index>(3 * i) + c] = bar.x(nodes[i], c);
+      analytic[static_cast<Index>(3 * i) + c] = grad(nodes[i], c);
+    }
+  auto f = [&](const Eigen::VectorXd& v) {
+    Positions x = bar.x;
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      for (int c = 0; c < 3; ++c) x(nodes[i], c) = v[static_cast<Index>(3 * i) + c];
+    energy.update(x);
+    return energy.value(x);
+  };
+  const Eigen::VectorXd fd = st::fd_gradient(f, x0, 1e-7);
+  const double err = st::relative_error(analytic, fd);
+  std::cout << "[self-contact] " << method_name(GetParam()) << ": " << pairs.size() << " pairs, energy " << value
+            << ", relative FD gradient error " << err << "\n";
+  EXPECT_LT(err, 1e-6);
+  // Zero net force and torque.
+  const Vector3 net = grad.colwise().sum().transpose();
+  Vector3 torque = Vector3::Zero();
+  for (Index a = 0; a < bar.x.rows(); ++a) torque += Vector3(bar.x.row(a)).cross(Vector3(grad.row(a)));
+  const double scale = grad.rowwise().norm().sum();
+  EXPECT_GT(scale, 0);
+  EXPECT_LT(net.norm(), 1e-12 * scale);
+  EXPECT_LT(torque.norm(), 1e-12 * scale);
+  // Without the self penalty nothing is active.
+  ContactGeometry off = bar.geometry;
+  off.penalty(0, 0) = 0;
+  ContactEnergy none(off, {GetParam(), PairHessian::Exact});
+  none.update(bar.x);
+  EXPECT_TRUE(none.active_pairs().empty());
+  EXPECT_EQ(none.value(bar.x), 0.0);
+}
+
+TEST_P(SelfContact, UnbentBarHasNoSelfContact) {
+  const BentBar bar = bent_bar(5.0);
+  ContactEnergy energy(bar.geometry, {GetParam(), PairHessian::GaussNewton});
+  energy.update(bar.rest);
+  EXPECT_TRUE(energy.active_pairs().empty());
+  EXPECT_EQ(energy.value(bar.rest), 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, SelfContact, ::testing::Values(ContactMethod::Area, ContactMethod::Point),
+                         [](const auto& info) { return info.param == ContactMethod::Area ? "Area" : "Point"; });
+
+// ---------------------------------------------------------------------------------------------
+// Zero depths, zero penalties
+
+class ContactMethods : public ::testing::TestWithParam<ContactMethod> {};
+
+TEST_P(ContactMethods, AllDepthsZeroMeansNoEnergy) {
+  auto boxes = st::two_boxes(2, Vector3(0.5, 0.3, 0.2), 0.3, 7.0);
+  boxes.geometry.depth.setZero();
+  ContactEnergy energy(boxes.geometry, {GetParam(), PairHessian::Exact});
+  energy.update(boxes.x);
+  EXPECT_TRUE(energy.active_pairs().empty());
+  EXPECT_EQ(energy.value(boxes.x), 0.0);
+  EXPECT_EQ(gradient_at(energy, boxes.x).norm(), 0.0);
+  EXPECT_EQ(hessian_at(energy, boxes.x).norm(), 0.0);
+}
+
+TEST_P(ContactMethods, TetsWithZeroDepthContributeNothing) {
+  // n = 3: some tets have four surface nodes (depth 0 everywhere). Removing them from the
+  // geometry changes nothing; none of them is ever an active pair.
+  const auto boxes = st::two_boxes(3, Vector3(0.45, 0.3, 0.2), 0.3, 7.0, false);
+  const auto& g = boxes.geometry;
+  std::vector<Index> keep;
+  std::set<Index> zero;
+  for (Index t = 0; t < g.tets.rows(); ++t) {
+    bool any = false;
+    for (int k = 0; k < 4; ++k) any = any || g.depth[g.tets(t, k)] > 0;
+    if (any)
+      keep.push_back(t);
+    else
+      zero.insert(t);
+  }
+  ASSERT_GT(zero.size(), 10u);
+  ContactGeometry reduced = g;
+  reduced.tets.resize(static_cast<Index>(keep.size()), 4);
+  reduced.tet_body.resize(static_cast<Index>(keep.size()));
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    reduced.tets.row(static_cast<Index>(i)) = g.tets.row(keep[i]);
+    reduced.tet_body[static_cast<Index>(i)] = g.tet_body[keep[i]];
+  }
+  ContactEnergy full(g, {GetParam(), PairHessian::Exact});
+  ContactEnergy part(reduced, {GetParam(), PairHessian::Exact});
+  full.update(boxes.x);
+  part.update(boxes.x);
+  ASSERT_FALSE(full.active_pairs().empty());
+  for (const auto& [f, t] : full.active_pairs()) EXPECT_EQ(zero.count(t), 0u) << "tet " << t;
+  EXPECT_EQ(full.active_pairs().size(), part.active_pairs().size());
+  EXPECT_NEAR(full.value(boxes.x), part.value(boxes.x), 1e-14 * full.value(boxes.x));
+  EXPECT_LT(st::relative_error(gradient_at(full, boxes.x), gradient_at(part, boxes.x)), 1e-14);
+  EXPECT_LT(st::relative_error(hessian_at(full, boxes.x), hessian_at(part, boxes.x)), 1e-14);
+}
+
+TEST_P(ContactMethods, ZeroPenaltyBetweenTwoBodiesMeansNoPairsBetweenThem) {
+  auto boxes = st::two_boxes(2, Vector3(0.5, 0.3, 0.2), 0.3, 7.0);
+  const auto& g = boxes.geometry;
+  // Only the other body's penalty: all pairs are cross-body.
+  ContactEnergy cross(g, {GetParam(), PairHessian::GaussNewton});
+  cross.update(boxes.x);
+  ASSERT_FALSE(cross.active_pairs().empty());
+  // Penalty only within each body: the overlapping boxes have no pair at all (self pairs need
+  // a body to fold onto itself).
+  ContactGeometry self_only = g;
+  self_only.penalty << 7, 0, 0, 7;
+  ContactEnergy self(self_only, {GetParam(), PairHessian::GaussNewton});
+  self.update(boxes.x);
+  for (const auto& [f, t] : self.active_pairs()) EXPECT_EQ(g.surface_body[f], g.tet_body[t]);
+  EXPECT_TRUE(self.active_pairs().empty());
+  EXPECT_EQ(self.value(boxes.x), 0.0);
+  // The energy is linear in the penalty.
+  ContactGeometry scaled = g;
+  scaled.penalty << 0, 3, 3, 0;
+  ContactEnergy three(scaled, {GetParam(), PairHessian::GaussNewton});
+  three.update(boxes.x);
+  EXPECT_EQ(three.active_pairs(), cross.active_pairs());
+  EXPECT_NEAR(three.value(boxes.x), 3.0 / 7.0 * cross.value(boxes.x), 1e-14 * cross.value(boxes.x));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Statistics
+
+TEST_P(ContactMethods, StatisticsAgreeWithIndependentComputations) {
+  const ContactMethod method = GetParam();
+  const auto boxes = st::two_boxes(2, Vector3(0.55, 0.3, -0.2), 0.4, 7.0, false);
+  const auto& g = boxes.geometry;
+  const Positions& x = boxes.x;
+  ContactEnergy energy(g, {method, PairHessian::GaussNewton});
+  const ContactStatistics s = energy.statistics(x);
+  const auto pairs = energy.active_pairs();
+  ASSERT_GT(pairs.size(), 10u);
+  EXPECT_EQ(s.pairs, static_cast<Index>(pairs.size()));
+
+  // Area, energy, max penetration from the collision module, pair by pair.
+  double area = 0, integral = 0, max_depth = 0;
+  for (const auto& [f, t] : pairs) {
+    Matrix3 tri;
+    Eigen::Matrix<double, 4, 3> tet;
+    Eigen::Vector4d depth;
+    for (int i = 0; i < 3; ++i) tri.row(i) = x.row(g.surface(f, i));
+    for (int k = 0; k < 4; ++k) {
+      tet.row(k) = x.row(g.tets(t, k));
+      depth[k] = g.depth[g.tets(t, k)];
+    }
+    const double eps = g.penalty(g.surface_body[f], g.tet_body[t]);
+    if (method == ContactMethod::Area) {
+      const collision::ClipPolygon p = collision::clip_triangle_tet(tri, tet);
+      ASSERT_GE(p.count, 3);
+      const collision::PolygonIntegral pi = collision::polygon_quadratic_integral(p, depth);
+      area += pi.area;
+      integral += 0.5 * eps * pi.integral;
+      for (int k = 0; k < p.count; ++k)
+        max_depth = std::max(max_depth, depth.dot(p.barycentric[static_cast<std::size_t>(k)]));
+    } else {
+      const collision::CollocationPoints c = collision::triangle_vertices_in_tet(tri, tet);
+      ASSERT_GE(c.count, 1);
+      const double A3 = 0.5 * (tri.row(1) - tri.row(0)).cross(tri.row(2) - tri.row(0)).norm() / 3;
+      for (int k = 0; k < c.count; ++k) {
+        const double gk = depth.dot(c.barycentric[static_cast<std::size_t>(k)]);
+        area += A3;
+        integral += 0.5 * eps * A3 * gk * gk;
+        max_depth = std::max(max_depth, gk);
+      }
+    }
+  }
+  EXPECT_NEAR(s.area, area, 1e-12 * area);
+  EXPECT_NEAR(s.energy, integral, 1e-12 * integral);
+  EXPECT_NEAR(s.max_penetration, max_depth, 1e-12);
+  energy.update(x);
+  EXPECT_EQ(s.energy, energy.value(x));
+  EXPECT_GT(s.mean_penetration, 0);
+  EXPECT_LE(s.mean_penetration, s.max_penetration);
+  EXPECT_LE(s.max_penetration, g.depth.maxCoeff());
+
+  // Nodal forces are minus the gradient; the force on body 0 from body 1 is minus the sum over
+  // body 1's nodes (and the sum over body 0's nodes).
+  const NodalVectors grad = gradient_at(energy, x);
+  EXPECT_LT(st::relative_error(s.nodal_force, -grad), 1e-14);
+  const Index na = x.rows() / 2;
+  ASSERT_EQ(s.body_pair_force.size(), 4u);
+  const Vector3 on0 = s.body_pair_force[0 * 2 + 1];
+  const Vector3 sum0 = s.nodal_force.topRows(na).colwise().sum().transpose();
+  const Vector3 sum1 = s.nodal_force.bottomRows(na).colwise().sum().transpose();
+  EXPECT_GT(on0.norm(), 0);
+  EXPECT_LT((on0 + sum1).norm(), 1e-12 * on0.norm());
+  EXPECT_LT((on0 - sum0).norm(), 1e-12 * on0.norm());
+  EXPECT_EQ(s.body_pair_force[1 * 2 + 0].norm(), 0.0);  // only i < j is filled
+  EXPECT_EQ(s.body_pair_force[0].norm(), 0.0);           // no self-contact here
+  EXPECT_EQ(s.body_pair_force[3].norm(), 0.0);
+  // Pressure is non-negative and positive somewhere.
+  EXPECT_GE(s.nodal_pressure.minCoeff(), 0.0);
+  EXPECT_GT(s.nodal_pressure.maxCoeff(), 0.0);
+}
+
+TEST_P(ContactMethods, StatisticsWithoutContactAreZero) {
+  const auto boxes = st::two_boxes(2, Vector3(3, 0, 0), 0.4, 7.0);
+  ContactEnergy energy(boxes.geometry, {GetParam(), PairHessian::GaussNewton});
+  const ContactStatistics s = energy.statistics(boxes.x);
+  EXPECT_EQ(s.pairs, 0);
+  EXPECT_EQ(s.area, 0.0);
+  EXPECT_EQ(s.energy, 0.0);
+  EXPECT_EQ(s.max_penetration, 0.0);
+  EXPECT_EQ(s.mean_penetration, 0.0);
+  EXPECT_EQ(s.nodal_force.norm(), 0.0);
+  for (const Vector3& f : s.body_pair_force) EXPECT_EQ(f.norm(), 0.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bookkeeping contract
+
+TEST_P(ContactMethods, PatternRevisionGrowsOnlyWhenNewBlocksAppear) {
+  auto apart = st::two_boxes(2, Vector3(3, 0, 0), 0.3, 7.0);
+  const auto shallow = st::two_boxes(2, Vector3(0.9, 0.1, 0.05), 0.3, 7.0);
+  const auto deep = st::two_boxes(2, Vector3(0.5, 0.2, 0.1), 0.3, 7.0);
+  ContactEnergy energy(apart.geometry, {GetParam(), PairHessian::GaussNewton});
+  energy.begin_step(apart.x);
+  EXPECT_TRUE(energy.active_pairs().empty());
+  const auto r0 = energy.pattern_revision();
+  std::vector<std::pair<Index, Index>> pattern;
+  energy.hessian_pattern(pattern);
+  EXPECT_TRUE(pattern.empty());
+
+  energy.update(deep.x);
+  ASSERT_FALSE(energy.active_pairs().empty());
+  const auto r1 = energy.pattern_revision();
+  EXPECT_GT(r1, r0);
+  // The same x again: nothing new.
+  energy.update(deep.x);
+  EXPECT_EQ(energy.pattern_revision(), r1);
+  energy.update(Positions(deep.x));
+  EXPECT_EQ(energy.pattern_revision(), r1);
+  // Back to no contact and to the same contact: the pattern is a union, no growth.
+  energy.update(apart.x);
+  EXPECT_TRUE(energy.active_pairs().empty());
+  EXPECT_EQ(energy.pattern_revision(), r1);
+  energy.update(deep.x);
+  EXPECT_EQ(energy.pattern_revision(), r1);
+  // Every active pair's blocks are in the pattern: add_hessian succeeds.
+  EXPECT_NO_THROW(hessian_at(energy, deep.x));
+
+  // A shallow overlap uses pairs the deep one did not (other triangles near the surface)?
+  // If so the revision grows, otherwise it stays.
+  pattern.clear();
+  energy.hessian_pattern(pattern);
+  std::set<std::pair<Index, Index>> before;
+  for (auto [a, b] : pattern) before.emplace(std::min(a, b), std::max(a, b));
+  energy.update(shallow.x);
+  pattern.clear();
+  energy.hessian_pattern(pattern);
+  std::set<std::pair<Index, Index>> after;
+  for (auto [a, b] : pattern) after.emplace(std::min(a, b), std::max(a, b));
+  EXPECT_TRUE(std::includes(after.begin(), after.end(), before.begin(), before.end()));
+  if (after.size() > before.size()) {
+    EXPECT_GT(energy.pattern_revision(), r1);
+  } else {
+    EXPECT_EQ(energy.pattern_revision(), r1);
+  }
+}
+
+TEST_P(ContactMethods, AddHessianThrowsWhenThePatternLacksAContactBlock) {
+  const auto boxes = st::two_boxes(2, Vector3(0.5, 0.2, 0.1), 0.3, 7.0);
+  ContactEnergy energy(boxes.geometry, {GetParam(), PairHessian::GaussNewton});
+  energy.update(boxes.x);
+  ASSERT_FALSE(energy.active_pairs().empty());
+  BlockSparseMatrix diagonal_only;
+  diagonal_only.set_pattern(static_cast<Index>(boxes.x.rows()), {});
+  EXPECT_THROW(energy.add_hessian(boxes.x, diagonal_only), std::logic_error);
+  // One block short of the full pattern.
+  std::vector<std::pair<Index, Index>> pattern;
+  energy.hessian_pattern(pattern);
+  ASSERT_FALSE(pattern.empty());
+  // Drop a block some active pair needs: the first pair's triangle vertex 0 with its tet vertex 0.
+  const auto [f, t] = energy.active_pairs().front();
+  const Index a = boxes.geometry.surface(f, 0), b = boxes.geometry.tets(t, 0);
+  std::erase_if(pattern, [&](const auto& p) { return (p.first == a && p.second == b) || (p.first == b && p.second == a); });
+  BlockSparseMatrix short_one;
+  short_one.set_pattern(static_cast<Index>(boxes.x.rows()), pattern);
+  EXPECT_THROW(energy.add_hessian(boxes.x, short_one), std::logic_error);
+}
+
+TEST_P(ContactMethods, EvaluatingAtAnotherXThanTheLastUpdateThrows) {
+  const auto boxes = st::two_boxes(2, Vector3(0.5, 0.2, 0.1), 0.3, 7.0);
+  ContactEnergy energy(boxes.geometry, {GetParam(), PairHessian::GaussNewton});
+  // Before any update.
+  EXPECT_THROW((void)energy.value(boxes.x), std::logic_error);
+  energy.update(boxes.x);
+  EXPECT_NO_THROW((void)energy.value(boxes.x));
+  Positions moved = boxes.x;
+  moved(0, 0) += 1e-9;
+  EXPECT_THROW((void)energy.value(moved), std::logic_error);
+  NodalVectors g = NodalVectors::Zero(moved.rows(), 3);
+  EXPECT_THROW(energy.add_gradient(moved, g), std::logic_error);
+  std::vector<std::pair<Index, Index>> pattern;
+  energy.hessian_pattern(pattern);
+  BlockSparseMatrix H;
+  H.set_pattern(static_cast<Index>(moved.rows()), pattern);
+  EXPECT_THROW(energy.add_hessian(moved, H), std::logic_error);
+  // A different number of rows.
+  const Positions fewer = boxes.x.topRows(boxes.x.rows() - 1);
+  EXPECT_THROW((void)energy.value(fewer), std::logic_error);
+  EXPECT_THROW(energy.update(fewer), std::invalid_argument);
+  // After update(moved) it is fine.
+  energy.update(moved);
+  EXPECT_NO_THROW((void)energy.value(moved));
+  EXPECT_THROW((void)energy.value(boxes.x), std::logic_error);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, ContactMethods, ::testing::Values(ContactMethod::Area, ContactMethod::Point),
+                         [](const auto& info) { return info.param == ContactMethod::Area ? "Area" : "Point"; });
+
+}  // namespace
+}  // namespace sinew::contact
