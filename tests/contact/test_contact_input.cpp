@@ -184,10 +184,9 @@ TEST(ContactInput, PositionsOfTheWrongSizeAreRejectedAtUpdate) {
   EXPECT_THROW(energy.begin_step(more), std::invalid_argument);
 }
 
-// Known defect (reported, not fixed here): begin_step(x) builds the tet boxes from x before
-// update(x) checks its number of rows, so an x with fewer rows than nodes is read out of bounds
-// (AddressSanitizer: heap-buffer-overflow in collision::tet_boxes). update(x) alone rejects it
-// with std::invalid_argument. Enable once begin_step checks first.
+// Regression: begin_step(x) used to build the tet boxes from x before update(x) checked its
+// number of rows, so an x with fewer rows than nodes was read out of bounds (AddressSanitizer:
+// heap-buffer-overflow in collision::tet_boxes).
 TEST(ContactInput, BeginStepRejectsPositionsWithTooFewRows) {
   const auto boxes = st::two_boxes(2, Vector3(0.5, 0.2, 0.1), 0.3, 7.0);
   ContactEnergy energy(boxes.geometry, {});

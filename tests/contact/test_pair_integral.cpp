@@ -214,7 +214,7 @@ const char* method_name(bool area) { return area ? "area" : "point"; }
 TEST(PairIntegral, AreaIntegralEqualsThePolygonQuadratureOfTheCollisionModule) {
   std::mt19937 rng(101);
   int many_vertices = 0;
-  for (int trial = 0; trial < 300; ++trial) {
+  for (int trial = 0; trial < 150; ++trial) {
     const PairGeometry pg = random_pair(rng);
     const ClipPolygon p = collision::clip_triangle_tet(pg.triangle, pg.tet);
     const double I = area_integral(pg, p);
@@ -237,14 +237,14 @@ TEST(PairIntegral, AreaIntegralEqualsThePolygonQuadratureOfTheCollisionModule) {
     EXPECT_GE(m.depth_integral, 0.0);
     many_vertices += p.count >= 5;
   }
-  EXPECT_GT(many_vertices, 20);
+  EXPECT_GT(many_vertices, 10);
 }
 
 TEST(PairIntegral, AreaIntegralMatchesFineSamplingAndTheErrorShrinksWithTheGrid) {
   // Brute force over the whole triangle (the sampler knows nothing of the clip polygon); the
   // error comes from the cells cut by the polygon's boundary, O(1/n).
   std::mt19937 rng(202);
-  const std::array<int, 4> grid{100, 200, 400, 800};
+  const std::array<int, 4> grid{50, 100, 200, 400};
   std::array<double, 4> total_error{};
   double total_exact = 0;
   const int pairs = 8;
@@ -662,7 +662,7 @@ TEST(PairIntegralDegenerate, RandomTrianglesWithVerticesOnTetFeatures) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::uniform_int_distribution<int> pick(0, 5);
   const std::array<double, 3> scales{1.0, 1e-9, 1e6};
-  for (int trial = 0; trial < 1500; ++trial) {
+  for (int trial = 0; trial < 600; ++trial) {
     const TetVertices tet = random_tet(rng);
     Matrix3 tri;
     for (int i = 0; i < 3; ++i) {
@@ -690,11 +690,10 @@ TEST(PairIntegralDegenerate, RandomTrianglesWithVerticesOnTetFeatures) {
   }
 }
 
-// Known defect (reported, not fixed here): a zero-area triangle (collinear or coincident
-// vertices) whose clip has count >= 3 gives a NaN area integral (0.5 / |n| = inf times a zero fan
-// area) and NaN gradients for both methods (d|n| = n / |n| at n = 0). A collapsed surface
-// triangle inside another body makes ContactEnergy::value NaN. Expected: value 0 (no area) and a
-// finite (e.g. zero) gradient. Enable once fixed.
+// Regression: a zero-area triangle (collinear or coincident vertices) whose clip has count >= 3
+// used to give a NaN area integral (0.5 / |n| = inf times a zero fan area) and NaN gradients for
+// both methods (d|n| = n / |n| at n = 0), so a collapsed surface triangle inside another body
+// made ContactEnergy::value NaN. It contributes nothing: value 0, finite derivatives.
 TEST(PairIntegralDegenerate, ZeroAreaTriangleGivesFiniteValues) {
   PairGeometry pg;
   pg.tet = unit_tet();
