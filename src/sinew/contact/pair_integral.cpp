@@ -11,7 +11,7 @@ namespace {
 
 using collision::ClipVertexKind;
 
-/// A 3-vector over any scalar type (double, Dual, Dual2); Eigen needs NumTraits for custom
+/// A 3-vector over any scalar type (double, Dual, TapeScalar); Eigen needs NumTraits for custom
 /// scalars, a plain struct does not.
 template <class S>
 struct Vec {

@@ -5,7 +5,8 @@
 /// with respect to its (at most two) operands as Dual<N> numbers. Sweeping the tape backwards with
 /// Dual<N> adjoints yields, for each independent variable x_i, dI/dx_i (the adjoint's value) and
 /// the Hessian row d²I/dx_i dx (the adjoint's gradient part). Cost: a few times one Dual<N>
-/// evaluation, about N/4 times less than propagating full N x N Hessians forward (Dual2).
+/// evaluation, 3-4 times less than propagating full N x N Hessians forward
+/// (measured for N = 21: 67-87 us against 263 us per contact pair).
 ///
 /// Usage: create a Tape, make it active with Tape::Scope, build variables with
 /// TapeScalar::variable(value, i) and compute; then call tape.gradient_and_hessian(result, ...).
