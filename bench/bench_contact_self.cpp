@@ -456,6 +456,8 @@ BENCHMARK_CAPTURE(BM_SelfContactNewtonIteration, area_gauss_newton, M::Area, PH:
     ->Iterations(5)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SelfContactNewtonIteration, area_exact, M::Area, PH::Exact, "area/Exact")
     ->Iterations(5)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SelfContactNewtonIteration, area_projected, M::Area, PH::Projected, "area/Projected")
+    ->Iterations(5)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SelfContactNewtonIteration, point_gauss_newton, M::Point, PH::GaussNewton, "point/GN")
     ->Iterations(5)->UseManualTime()->Unit(benchmark::kMillisecond);
 

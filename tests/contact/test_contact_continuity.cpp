@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "sinew/collision/broad_phase.hpp"
 #include "sinew/collision/clip_triangle_tet.hpp"
 #include "sinew/collision/material_depth.hpp"
 #include "sinew/collision/polygon_quadrature.hpp"
@@ -265,6 +266,43 @@ BentBar bent_bar(double penalty) {
 }
 
 class SelfContact : public ::testing::TestWithParam<ContactMethod> {};
+
+TEST(SelfContactNarrowPhase, PlaneRejectionKeepsEveryPairWithAreaAndTheEnergyOfBruteForce) {
+  // Every (triangle, tet) pair of the bent bar, clipped without the broad phase and without the
+  // plane test: pairs whose polygon has area must all be active, active pairs must all have a
+  // polygon, and the energies agree.
+  const BentBar bar = bent_bar(5.0);
+  const auto& g = bar.geometry;
+  ContactEnergy energy(g, {ContactMethod::Area, PairHessian::Exact});
+  energy.update(bar.x);
+  const auto active = energy.active_pairs();
+  const std::set<std::pair<Index, Index>> active_set(active.begin(), active.end());
+  double brute_energy = 0;
+  int with_area = 0;
+  for (Index f = 0; f < g.surface.rows(); ++f)
+    for (Index t = 0; t < g.tets.rows(); ++t) {
+      if (collision::shares_node(g.surface, f, g.tets, t)) continue;
+      PairGeometry pg;
+      for (int k = 0; k < 3; ++k) pg.triangle.row(k) = bar.x.row(g.surface(f, k));
+      for (int k = 0; k < 4; ++k) {
+        pg.tet.row(k) = bar.x.row(g.tets(t, k));
+        pg.depth[k] = g.depth[g.tets(t, k)];
+      }
+      if (pg.depth.maxCoeff() == 0) continue;  // g = 0 on the whole tet: skipped by design
+      const collision::ClipPolygon polygon = collision::clip_triangle_tet(pg.triangle, pg.tet);
+      const double area = polygon.count >= 3 ? area_moments(pg, polygon).area : 0.0;
+      if (area > 1e-12) {
+        ++with_area;
+        EXPECT_TRUE(active_set.count({f, t})) << "pair " << f << ", " << t << " with area " << area << " is missing";
+      }
+      if (active_set.count({f, t})) {
+        EXPECT_GE(polygon.count, 3) << "pair " << f << ", " << t;
+      }
+      if (polygon.count >= 3) brute_energy += 0.5 * g.penalty(0, 0) * area_integral(pg, polygon);
+    }
+  EXPECT_GT(with_area, 10);
+  EXPECT_NEAR(energy.value(bar.x), brute_energy, 1e-12 * brute_energy);
+}
 
 TEST_P(SelfContact, BentBarEndPenetratingItsStart) {
   const BentBar bar = bent_bar(5.0);

@@ -505,6 +505,27 @@ TEST_P(PairDerivatives, GaussNewtonHessianIsSymmetricPositiveSemiDefinite) {
   EXPECT_GT(nonzero, 50);
 }
 
+TEST_P(PairDerivatives, ProjectedHessianIsTheNearestPositiveSemiDefiniteMatrixToTheExactOne) {
+  const bool area = GetParam();
+  std::mt19937 rng(area ? 811 : 812);
+  int indefinite = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    const PairGeometry pg = random_method_pair(rng, area, trial);
+    const Derivatives exact = pair_hessian(pg, area, PairHessian::Exact);
+    const Derivatives projected = pair_hessian(pg, area, PairHessian::Projected);
+    EXPECT_LT(st::relative_error(projected.gradient, exact.gradient, 1e-300), 1e-14);
+    const Eigen::SelfAdjointEigenSolver<PairMatrix> e(exact.hessian), p(projected.hessian);
+    const double top = e.eigenvalues().cwiseAbs().maxCoeff() + 1e-300;
+    EXPECT_GE(p.eigenvalues().minCoeff(), -1e-12 * top) << method_name(area) << " trial " << trial;
+    // Frobenius distance to the exact Hessian = norm of its negative eigenvalues.
+    const double negative = e.eigenvalues().cwiseMin(0.0).norm();
+    EXPECT_NEAR((projected.hessian - exact.hessian).norm(), negative, 1e-10 * top) << "trial " << trial;
+    indefinite += negative > 1e-9 * top;
+  }
+  std::cout << "[pair integral] " << method_name(area) << ": " << indefinite << " of 150 exact pair Hessians indefinite\n";
+  EXPECT_GT(indefinite, 0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, PairDerivatives, ::testing::Values(true, false),
                          [](const auto& info) { return info.param ? "Area" : "Point"; });
 

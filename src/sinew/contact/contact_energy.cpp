@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "sinew/collision/broad_phase.hpp"
@@ -18,6 +19,31 @@ namespace {
 std::uint64_t block_key(Index a, Index b) {
   if (a > b) std::swap(a, b);
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+/// False when the tet lies on one side of the triangle's plane (touching it at most along an edge
+/// within round-off), so triangle ∩ tet has no area: the pair can be rejected before clipping.
+/// A tet with a face in the plane is kept (its intersection with the triangle can have area).
+bool tet_crosses_triangle_plane(const PairGeometry& pg) {
+  const Vector3 a = pg.triangle.row(0);
+  const Vector3 normal = (Vector3(pg.triangle.row(1)) - a).cross(Vector3(pg.triangle.row(2)) - a);
+  const double length = normal.norm();
+  if (!(length > 0)) return true;  // degenerate triangle: let the clip and the integral decide
+  double scale = 0;
+  for (int k = 1; k < 4; ++k) scale = std::max(scale, (pg.tet.row(k) - pg.tet.row(0)).cwiseAbs().maxCoeff());
+  const double tolerance = 1e-12 * scale;
+  int below = 0, above = 0, on = 0;
+  for (int k = 0; k < 4; ++k) {
+    const double d = normal.dot(Vector3(pg.tet.row(k)) - a) / length;
+    if (d > tolerance)
+      ++above;
+    else if (d < -tolerance)
+      ++below;
+    else
+      ++on;
+  }
+  if (above > 0 && below > 0) return true;
+  return on >= 3;
 }
 
 }  // namespace
@@ -114,35 +140,55 @@ void ContactEnergy::update(const Positions& x) {
   times_.query = seconds_since(t0);
   times_.candidates = static_cast<Index>(candidates.size());
   t0 = Clock::now();
-  std::vector<ActivePair> found(candidates.size());
-  std::vector<char> keep(candidates.size(), 0);
+  // Narrow phase. Most candidates are neighbours that merely touch the triangle's plane from one
+  // side; they are rejected by the plane test before clipping, and only kept pairs are stored.
+  struct Kept {
+    std::size_t candidate;
+    ActivePair pair;
+  };
+  tbb::enumerable_thread_specific<std::vector<Kept>> kept_per_thread;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 256), [&](const auto& range) {
+    std::vector<Kept>& kept = kept_per_thread.local();
+    Kept item;
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
       const auto [f, t] = candidates[k];
       if (!tet_has_depth_[static_cast<std::size_t>(t)]) continue;
       const double penalty = geometry_.penalty(geometry_.surface_body[f], geometry_.tet_body[t]);
       if (penalty == 0) continue;
-      ActivePair& p = found[k];
+      ActivePair& p = item.pair;
       p.triangle = f;
       p.tet = t;
       p.penalty = penalty;
       const PairGeometry pg = pair_geometry(x, p);
+      bool keep = false;
       if (options_.method == ContactMethod::Area) {
+        if (!tet_crosses_triangle_plane(pg)) continue;
         p.polygon = collision::clip_triangle_tet(pg.triangle, pg.tet);
-        keep[k] = p.polygon.count >= 3;
+        keep = p.polygon.count >= 3;
       } else {
         p.points = collision::triangle_vertices_in_tet(pg.triangle, pg.tet);
-        keep[k] = p.points.count > 0;
+        keep = p.points.count > 0;
+      }
+      if (keep) {
+        item.candidate = k;
+        kept.push_back(item);
       }
     }
   });
+  std::vector<Kept> all;
+  for (auto& kept : kept_per_thread) all.insert(all.end(), kept.begin(), kept.end());
+  std::sort(all.begin(), all.end(), [](const Kept& a, const Kept& b) { return a.candidate < b.candidate; });
   active_.clear();
-  for (std::size_t k = 0; k < candidates.size(); ++k)
-    if (keep[k]) active_.push_back(found[k]);
-
+  active_.reserve(all.size());
+  for (const Kept& item : all) active_.push_back(item.pair);
   times_.clip = seconds_since(t0);
+
+  // Pattern: only pairs never seen before can add blocks.
   bool grew = false;
   for (const ActivePair& p : active_) {
+    const std::uint64_t pair_key =
+        (static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.triangle)) << 32) | static_cast<std::uint32_t>(p.tet);
+    if (!pairs_in_pattern_.insert(pair_key).second) continue;
     const auto nodes = pair_nodes(p);
     for (int i = 0; i < 7; ++i)
       for (int j = i + 1; j < 7; ++j)
@@ -203,27 +249,38 @@ void ContactEnergy::hessian_pattern(std::vector<std::pair<Index, Index>>& pairs)
 
 void ContactEnergy::add_hessian(const Positions& x, BlockSparseMatrix& H) const {
   require_current(x);
-  std::vector<PairMatrix> hessians(active_.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, active_.size(), 16), [&](const auto& range) {
-    PairVector gradient;
-    for (std::size_t k = range.begin(); k != range.end(); ++k) {
-      const ActivePair& p = active_[k];
-      const PairGeometry pg = pair_geometry(x, p);
-      if (options_.method == ContactMethod::Area)
-        area_integral_hessian(pg, p.polygon, options_.hessian, gradient, hessians[k]);
-      else
-        point_integral_hessian(pg, p.points, options_.hessian, gradient, hessians[k]);
-      hessians[k] *= 0.5 * p.penalty;
-    }
-  });
-  for (std::size_t k = 0; k < active_.size(); ++k) {
-    const auto nodes = pair_nodes(active_[k]);
-    for (int i = 0; i < 7; ++i)
-      for (int j = 0; j < 7; ++j) {
-        const Index b = H.find(nodes[static_cast<std::size_t>(i)], nodes[static_cast<std::size_t>(j)]);
-        if (b < 0) throw std::logic_error("ContactEnergy::add_hessian: a contact block is missing from the pattern");
-        H.add(b, hessians[k].block<3, 3>(3 * i, 3 * j));
+  // In chunks: pair Hessians and their block indices in parallel, then a serial scatter (which
+  // is cheap), so memory stays bounded by the chunk.
+  constexpr std::size_t kChunk = 2048;
+  std::vector<PairMatrix> hessians(std::min(kChunk, active_.size()));
+  std::vector<std::array<Index, 49>> blocks(hessians.size());
+  for (std::size_t begin = 0; begin < active_.size(); begin += kChunk) {
+    const std::size_t end = std::min(active_.size(), begin + kChunk);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 16), [&](const auto& range) {
+      PairVector gradient;
+      for (std::size_t k = range.begin(); k != range.end(); ++k) {
+        const ActivePair& p = active_[k];
+        const PairGeometry pg = pair_geometry(x, p);
+        PairMatrix& hessian = hessians[k - begin];
+        if (options_.method == ContactMethod::Area)
+          area_integral_hessian(pg, p.polygon, options_.hessian, gradient, hessian);
+        else
+          point_integral_hessian(pg, p.points, options_.hessian, gradient, hessian);
+        hessian *= 0.5 * p.penalty;
+        const auto nodes = pair_nodes(p);
+        for (int i = 0; i < 7; ++i)
+          for (int j = 0; j < 7; ++j)
+            blocks[k - begin][static_cast<std::size_t>(7 * i + j)] =
+                H.find(nodes[static_cast<std::size_t>(i)], nodes[static_cast<std::size_t>(j)]);
       }
+    });
+    for (std::size_t k = begin; k < end; ++k)
+      for (int i = 0; i < 7; ++i)
+        for (int j = 0; j < 7; ++j) {
+          const Index b = blocks[k - begin][static_cast<std::size_t>(7 * i + j)];
+          if (b < 0) throw std::logic_error("ContactEnergy::add_hessian: a contact block is missing from the pattern");
+          H.add(b, hessians[k - begin].block<3, 3>(3 * i, 3 * j));
+        }
   }
 }
 

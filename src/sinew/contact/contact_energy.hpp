@@ -115,6 +115,8 @@ class ContactEnergy final : public Energy {
   Positions current_x_;
   std::vector<ActivePair> active_;
   std::unordered_set<std::uint64_t> pattern_;
+  /// (triangle, tet) keys of every pair whose blocks are in pattern_.
+  std::unordered_set<std::uint64_t> pairs_in_pattern_;
   std::uint64_t revision_ = 0;
   CollisionTimes times_;
   /// Tets whose four nodes all have zero depth carry no energy (g ≡ 0) and are skipped.

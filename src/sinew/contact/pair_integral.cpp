@@ -4,7 +4,9 @@
 #include <array>
 
 #include "sinew/contact/dual.hpp"
+#include "sinew/contact/gradient_tape.hpp"
 #include "sinew/contact/tape.hpp"
+#include "sinew/core/psd_projection.hpp"
 
 namespace sinew::contact {
 namespace {
@@ -184,6 +186,17 @@ bool degenerate_triangle(const PairGeometry& pair) {
 }
 
 using D1 = Dual<kPairVariables>;
+using RS = ReverseScalar;
+
+/// Exact gradient of f<ReverseScalar>() by one reverse sweep.
+template <class F>
+double tape_gradient(F&& f, PairVector& gradient) {
+  thread_local GradientTape tape;
+  const GradientTape::Scope scope(tape);
+  const RS I = f();
+  tape.gradient(I.node, gradient);
+  return I.v;
+}
 using TS = TapeScalar<kPairVariables>;
 
 /// Exact gradient and Hessian of f<TapeScalar>() by reverse-over-forward differentiation.
@@ -208,9 +221,7 @@ double area_integral_gradient(const PairGeometry& pair, const collision::ClipPol
     gradient.setZero();
     return 0;
   }
-  const D1 I = area_integral_t<D1>(pair, polygon);
-  gradient = I.d;
-  return I.v;
+  return tape_gradient([&] { return area_integral_t<RS>(pair, polygon); }, gradient);
 }
 
 double area_integral_hessian(const PairGeometry& pair, const collision::ClipPolygon& polygon, PairHessian kind,
@@ -220,8 +231,11 @@ double area_integral_hessian(const PairGeometry& pair, const collision::ClipPoly
     hessian.setZero();
     return 0;
   }
-  if (kind == PairHessian::Exact)
-    return tape_hessian([&] { return area_integral_t<TS>(pair, polygon); }, gradient, hessian);
+  if (kind != PairHessian::GaussNewton) {
+    const double I = tape_hessian([&] { return area_integral_t<TS>(pair, polygon); }, gradient, hessian);
+    if (kind == PairHessian::Projected) hessian = project_to_psd(hessian);
+    return I;
+  }
   // Gauss-Newton: per fan triangle, A/12 (a² + b² + c² + s²) -> A/6 (∇a∇aᵀ + ∇b∇bᵀ + ∇c∇cᵀ + ∇s∇sᵀ)
   // with the areas frozen (and clamped at 0, so the sum stays positive semi-definite).
   hessian.setZero();
@@ -230,13 +244,23 @@ double area_integral_hessian(const PairGeometry& pair, const collision::ClipPoly
   const Fan<D1> fan = make_fan(make_nodes<D1>(pair), pair.depth, polygon);
   const D1 I = fan_integral(fan);
   gradient = I.d;
-  for (int j = 1; j + 1 < fan.count; ++j) {
-    const auto J = static_cast<std::size_t>(j);
-    const double w = std::max(0.0, fan.area[J].v) / 6.0;
-    const PairVector s = fan.g[0].d + fan.g[J].d + fan.g[J + 1].d;
-    hessian.noalias() += w * (fan.g[0].d * fan.g[0].d.transpose() + fan.g[J].d * fan.g[J].d.transpose() +
-                              fan.g[J + 1].d * fan.g[J + 1].d.transpose() + s * s.transpose());
+  // Σ_j w_j (∇a∇aᵀ + ∇b∇bᵀ + ∇c∇cᵀ + ∇s∇sᵀ) = Gᵀ C G, G the count x 21 depth gradients at the
+  // polygon vertices and C the count x count weights (cheaper than the rank-one updates).
+  const int count = fan.count;
+  Eigen::Matrix<double, collision::kMaxClipVertices, collision::kMaxClipVertices> C;
+  C.setZero();
+  for (int j = 1; j + 1 < count; ++j) {
+    const double w = std::max(0.0, fan.area[static_cast<std::size_t>(j)].v) / 6.0;
+    const int v[3] = {0, j, j + 1};
+    for (int r = 0; r < 3; ++r) {
+      C(v[r], v[r]) += w;  // ∇a∇aᵀ
+      for (int c = 0; c < 3; ++c) C(v[r], v[c]) += w;  // ∇s∇sᵀ, s = a + b + c
+    }
   }
+  Eigen::Matrix<double, Eigen::Dynamic, kPairVariables, 0, collision::kMaxClipVertices, kPairVariables> G(count,
+                                                                                                        kPairVariables);
+  for (int k = 0; k < count; ++k) G.row(k) = fan.g[static_cast<std::size_t>(k)].d.transpose();
+  hessian.noalias() = G.transpose() * (C.topLeftCorner(count, count) * G);
   return I.v;
 }
 
@@ -264,9 +288,7 @@ double point_integral_gradient(const PairGeometry& pair, const collision::Colloc
     gradient.setZero();
     return 0;
   }
-  const D1 I = point_integral_t<D1>(pair, points);
-  gradient = I.d;
-  return I.v;
+  return tape_gradient([&] { return point_integral_t<RS>(pair, points); }, gradient);
 }
 
 double point_integral_hessian(const PairGeometry& pair, const collision::CollocationPoints& points,
@@ -276,8 +298,11 @@ double point_integral_hessian(const PairGeometry& pair, const collision::Colloca
     hessian.setZero();
     return 0;
   }
-  if (kind == PairHessian::Exact)
-    return tape_hessian([&] { return point_integral_t<TS>(pair, points); }, gradient, hessian);
+  if (kind != PairHessian::GaussNewton) {
+    const double I = tape_hessian([&] { return point_integral_t<TS>(pair, points); }, gradient, hessian);
+    if (kind == PairHessian::Projected) hessian = project_to_psd(hessian);
+    return I;
+  }
   hessian.setZero();
   gradient.setZero();
   if (points.count == 0) return 0;

@@ -34,7 +34,8 @@ struct PairGeometry {
 /// How the Hessian of a pair is formed.
 enum class PairHessian {
   Exact,       ///< the exact second derivative (indefinite in general)
-  GaussNewton  ///< Σ w ∇g ∇gᵀ over the quadrature of g² with frozen areas: positive semi-definite
+  GaussNewton,  ///< Σ w ∇g ∇gᵀ over the quadrature of g² with frozen areas: positive semi-definite
+  Projected     ///< the exact second derivative projected onto the PSD cone (negative eigenvalues -> 0)
 };
 
 /// ∫ g² da over the clip polygon `polygon` (from clip_triangle_tet of the same geometry).

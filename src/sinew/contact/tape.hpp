@@ -15,6 +15,8 @@
 #include <cmath>
 #include <vector>
 
+#include "sinew/contact/active_tape.hpp"
+
 #include "sinew/contact/dual.hpp"
 
 namespace sinew::contact {
@@ -30,19 +32,7 @@ class Tape {
   };
 
   /// Makes `tape` the calling thread's active tape for the lifetime of the scope (and clears it).
-  class Scope {
-   public:
-    explicit Scope(Tape& tape) : previous_(active()) {
-      tape.clear();
-      active() = &tape;
-    }
-    ~Scope() { active() = previous_; }
-    Scope(const Scope&) = delete;
-    Scope& operator=(const Scope&) = delete;
-
-   private:
-    Tape* previous_;
-  };
+  using Scope = ActiveTapeScope<Tape>;
 
   static Tape*& active() {
     thread_local Tape* tape = nullptr;

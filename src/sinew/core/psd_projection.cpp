@@ -30,6 +30,8 @@ Matrix9 project_to_psd(const Matrix9& A) { return project_symmetric(A); }
 
 Matrix12 project_to_psd(const Matrix12& A) { return project_symmetric(A); }
 
+Eigen::Matrix<double, 21, 21> project_to_psd(const Eigen::Matrix<double, 21, 21>& A) { return project_symmetric(A); }
+
 void project_to_psd_in_place(Eigen::Ref<MatrixX> A) {
   if (A.rows() != A.cols()) throw std::invalid_argument("project_to_psd_in_place: matrix is not square");
   if (A.size() == 0) return;

@@ -20,6 +20,8 @@ Matrix9 project_to_psd(const Matrix9& A);
 /// PSD projection of a 12x12 matrix (e.g. a linear tetrahedron's element Hessian). Heap-free.
 Matrix12 project_to_psd(const Matrix12& A);
 
+/// PSD projection of a 21x21 matrix (a contact pair: triangle and tet vertices). Heap-free.
+Eigen::Matrix<double, 21, 21> project_to_psd(const Eigen::Matrix<double, 21, 21>& A);
 /// PSD projection of a square matrix of any size, in place (allocates for the
 /// eigen-decomposition). A must be square.
 void project_to_psd_in_place(Eigen::Ref<MatrixX> A);

@@ -258,8 +258,10 @@ class SceneReader {
     contact.enabled = true;
     contact.method = j.at("method").get<std::string>() == "point" ? contact::ContactMethod::Point
                                                                   : contact::ContactMethod::Area;
-    contact.hessian = j.at("hessian").get<std::string>() == "exact" ? contact::PairHessian::Exact
-                                                                    : contact::PairHessian::GaussNewton;
+    const std::string hessian = j.at("hessian").get<std::string>();
+    contact.hessian = hessian == "exact"       ? contact::PairHessian::Exact
+                      : hessian == "projected" ? contact::PairHessian::Projected
+                                               : contact::PairHessian::GaussNewton;
     if (j.contains("penalty")) contact.penalty = j.at("penalty").get<double>();
     contact.penalty_scale = j.at("penalty_scale").get<double>();
     contact.self_contact = j.at("self_contact").get<bool>();

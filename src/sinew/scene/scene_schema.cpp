@@ -368,9 +368,14 @@ SchemaNode contact_schema() {
                            "\"point\": the seed's collocation at triangle vertices (baseline)")
               .allowed({"area", "point"})
               .fallback("area"),
-          string("hessian", "contact stiffness: \"gauss-newton\" (positive semi-definite) or \"exact\"")
-              .allowed({"gauss-newton", "exact"})
-              .fallback(defaults.hessian == contact::PairHessian::Exact ? "exact" : "gauss-newton"),
+          string("hessian",
+                 "contact stiffness: \"exact\" (the exact second derivative), \"projected\" (exact, each pair "
+                 "projected onto the positive semi-definite cone) or \"gauss-newton\" (positive semi-definite, "
+                 "frozen areas; cheapest, converges slowly where contact areas change)")
+              .allowed({"exact", "projected", "gauss-newton"})
+              .fallback(defaults.hessian == contact::PairHessian::Exact       ? "exact"
+                        : defaults.hessian == contact::PairHessian::Projected ? "projected"
+                                                                              : "gauss-newton"),
           number("penalty",
                  "penalty for every pair of bodies (force / length^3: a penetration g meets a pressure of about "
                  "penalty * g); default: penalty_scale * E / h per pair of bodies")
