@@ -202,6 +202,55 @@ TEST(LoadScene, OptionalsAndConversions) {
   EXPECT_EQ(config.boundary_conditions[1].nodes.name, "cube.surface");
 }
 
+TEST(LoadScene, TorusIntersectionAndShapeTransforms) {
+  json scene = minimal_scene();
+  scene["bodies"][0]["mesh"]["generate"]["parts"] = json::parse(R"([
+    {"region": "slope", "shape": {"box": {"min": [-2, -1, -0.1], "max": [2, 1, 0.1]},
+                                  "transform": {"rotate": {"axis": [0, 1, 0], "angle_deg": 45, "center": [0, 0, 1]},
+                                                "translate": [0, 0, 2]}}},
+    {"region": "bar", "shape": {"torus": {"center": [1, 2, 3], "axis": [0, 0, 2], "radius": 1, "minor_radius": 0.1,
+                                          "angle_deg": 90, "start_direction": [0, 1, 0]}}},
+    {"region": "ring", "shape": {"torus": {"center": [0, 0, 0], "axis": [1, 0, 0], "radius": 2, "minor_radius": 0.5}}},
+    {"region": "cap", "shape": {"intersection": [{"sphere": {"center": [0, 0, 0], "radius": 1}},
+                                                 {"box": {"min": [-1, -1, 0.5], "max": [1, 1, 1]},
+                                                  "transform": {"translate": [0, 0, 0.25]}}],
+                                "transform": {"rotate": {"axis": [1, 0, 0], "angle_deg": -30}}}}])");
+  const SceneConfig config = parse_scene(scene, "");
+  const auto& parts = config.bodies[0].mesh.parts;
+  ASSERT_EQ(parts.size(), 4u);
+
+  const mesh::Shape& slope = parts[0].shape;
+  EXPECT_EQ(slope.kind, mesh::Shape::Kind::Box);
+  EXPECT_EQ(slope.rotation_axis, Vector3(0, 1, 0));
+  EXPECT_EQ(slope.rotation_angle_deg, 45);  // degrees, as in the file
+  EXPECT_EQ(slope.rotation_center, Vector3(0, 0, 1));
+  EXPECT_EQ(slope.translation, Vector3(0, 0, 2));
+
+  const mesh::Shape& bar = parts[1].shape;
+  EXPECT_EQ(bar.kind, mesh::Shape::Kind::Torus);
+  EXPECT_EQ(bar.center, Vector3(1, 2, 3));
+  EXPECT_EQ(bar.axis, Vector3(0, 0, 2));
+  EXPECT_EQ(bar.radius, 1);
+  EXPECT_EQ(bar.minor_radius, 0.1);
+  EXPECT_EQ(bar.angle_deg, 90);
+  EXPECT_EQ(bar.start_direction, Vector3(0, 1, 0));
+  EXPECT_EQ(bar.rotation_angle_deg, 0);  // no transform: the identity
+  EXPECT_EQ(bar.translation, Vector3::Zero());
+
+  const mesh::Shape& ring = parts[2].shape;
+  EXPECT_EQ(ring.angle_deg, 360);                     // the default: a full torus
+  EXPECT_EQ(ring.start_direction, Vector3::Zero());  // the default reference
+
+  const mesh::Shape& cap = parts[3].shape;
+  EXPECT_EQ(cap.kind, mesh::Shape::Kind::Intersection);
+  ASSERT_EQ(cap.children.size(), 2u);
+  EXPECT_EQ(cap.children[1].translation, Vector3(0, 0, 0.25));
+  EXPECT_EQ(cap.children[1].rotation_angle_deg, 0);
+  EXPECT_EQ(cap.rotation_angle_deg, -30);
+  EXPECT_EQ(cap.rotation_center, Vector3::Zero());  // the default centre
+  EXPECT_EQ(cap.translation, Vector3::Zero());      // the default translation
+}
+
 TEST(LoadScene, RelativeMeshPathsResolveAgainstTheBaseDirectory) {
   json scene = minimal_scene();
   scene["bodies"][0]["mesh"] = {{"file", "block.msh"}};
@@ -443,6 +492,44 @@ TEST(LoadSceneErrors, ShapesAreCheckedRecursively) {
   EXPECT_EQ(parse_error(scene),
             "bodies[0].mesh.generate.parts[0].shape.union[0].box: max must exceed min in every component\n"
             "bodies[0].mesh.generate.parts[1].region: duplicate part region \"a\"");
+}
+
+TEST(LoadSceneErrors, TorusIntersectionAndTransformInputs) {
+  json scene = minimal_scene();
+  scene["bodies"][0]["mesh"]["generate"]["parts"] = json::parse(R"([
+    {"region": "a", "shape": {"torus": {"center": [0, 0, 0], "axis": [0, 0, 0], "radius": 1, "minor_radius": 0,
+                                        "angle_deg": 400}}},
+    {"region": "b", "shape": {"intersection": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}]}},
+    {"region": "c", "shape": {"box": {"min": [0, 0, 0], "max": [1, 1, 1]},
+                              "transform": {"rotate": {"axis": [0, 0, 0], "angle_deg": 10, "centre": [0, 0, 0]},
+                                            "translate": [0, 0]}}},
+    {"region": "d", "shape": {"box": {"min": [0, 0, 0], "max": [1, 1, 1]}, "transform": {"rotate": {"axis": [1, 0, 0]}}}},
+    {"region": "e", "shape": {"transform": {"translate": [0, 0, 1]}}},
+    {"region": "f", "shape": {"torus": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "minor_radius": 0.5,
+                                        "angle_deg": 0, "start_direction": [0, 0, 0]}}}])");
+  EXPECT_EQ(parse_error(scene),
+            "bodies[0].mesh.generate.parts[0].shape.torus.axis: must not be the zero vector\n"
+            "bodies[0].mesh.generate.parts[0].shape.torus.minor_radius: must be > 0, got 0\n"
+            "bodies[0].mesh.generate.parts[0].shape.torus.angle_deg: must be <= 360, got 400\n"
+            "bodies[0].mesh.generate.parts[1].shape.intersection: must hold at least 2 elements, got 1\n"
+            "bodies[0].mesh.generate.parts[2].shape.transform.rotate.centre: unknown key; did you mean \"center\"?\n"
+            "bodies[0].mesh.generate.parts[2].shape.transform.rotate.axis: must not be the zero vector\n"
+            "bodies[0].mesh.generate.parts[2].shape.transform.translate: must be an array of 3 numbers [x, y, z], got [0,0]\n"
+            "bodies[0].mesh.generate.parts[3].shape.transform.rotate.angle_deg: missing required key (angle (degrees, "
+            "right-hand rule))\n"
+            "bodies[0].mesh.generate.parts[4].shape: must hold exactly one of \"box\", \"sphere\", \"cylinder\", "
+            "\"torus\", \"union\", \"difference\", \"intersection\"; found none\n"
+            "bodies[0].mesh.generate.parts[5].shape.torus.angle_deg: must be > 0, got 0\n"
+            "bodies[0].mesh.generate.parts[5].shape.torus.start_direction: must not be the zero vector");
+
+  // What the schema cannot see: the radii compared, the start direction along the axis.
+  scene["bodies"][0]["mesh"]["generate"]["parts"] = json::parse(R"([
+    {"region": "a", "shape": {"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}},
+    {"region": "b", "shape": {"torus": {"center": [0, 0, 0], "axis": [0, 0, 1], "radius": 1, "minor_radius": 1.5,
+                                        "start_direction": [0, 0, -3]}}}])");
+  EXPECT_EQ(parse_error(scene),
+            "bodies[0].mesh.generate.parts[1].shape.torus.minor_radius: must be < radius (1), got 1.5\n"
+            "bodies[0].mesh.generate.parts[1].shape.torus.start_direction: must not be parallel to axis");
 }
 
 TEST(LoadSceneErrors, EnumSuggestion) {

@@ -81,6 +81,10 @@ TEST(SceneSchema, DocumentedDefaultsEqualTheStructDefaults) {
   EXPECT_EQ(default_at("bodies.[].transform.rotate.angle_deg"), mesh_source.rotate_angle);
   EXPECT_EQ(default_at("bodies.[].mesh.generate.optimize_passes"), mesh::GenerateOptions{}.optimize_passes);
   EXPECT_EQ(default_at("bodies.[].regions.[].density"), RegionConfig{}.density);
+  const mesh::Shape shape;
+  EXPECT_EQ(default_at("bodies.[].mesh.generate.parts.[].shape.torus.angle_deg"), shape.angle_deg);
+  EXPECT_EQ(default_at("bodies.[].mesh.generate.parts.[].shape.transform.translate"), vec(shape.translation));
+  EXPECT_EQ(default_at("bodies.[].mesh.generate.parts.[].shape.transform.rotate.center"), vec(shape.rotation_center));
   EXPECT_EQ(default_at("materials.[].C2"), material::MooneyRivlinParams{}.C2);
   EXPECT_EQ(default_at("materials.[].fiber.direction"), vec(material::FiberParams{}.direction));
 
@@ -176,6 +180,9 @@ TEST(SceneSchema, JsonSchemaExport) {
   EXPECT_EQ(selector.at("oneOf").size(), 5u);
   const json& shape = schema.at("definitions").at("shape");
   EXPECT_EQ(shape.at("properties").at("union").at("items").at("$ref"), "#/definitions/shape");
+  EXPECT_EQ(shape.at("properties").at("intersection").at("items").at("$ref"), "#/definitions/shape");
+  EXPECT_EQ(shape.at("oneOf").size(), 7u);  // "transform" is not an alternative
+  EXPECT_TRUE(shape.at("properties").contains("transform"));
 }
 
 }  // namespace

@@ -2,8 +2,11 @@
 
 #include <gmsh.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -35,6 +38,12 @@ const Vector3 kSphereSeamRotationAxis = Vector3(1, 2, 3).normalized();
 constexpr double kElementsPerTurn = 12;
 constexpr double kMinSizeFactor = 0.1;
 
+constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
+
+/// The default reference direction of a torus is +x projected onto its plane, unless that
+/// projection is shorter than this (axis within 0.06 degrees of x); then +y projected.
+constexpr double kMinReferenceProjection = 1e-3;
+
 std::string kind_name(Shape::Kind kind) {
   switch (kind) {
     case Shape::Kind::Box:
@@ -43,10 +52,14 @@ std::string kind_name(Shape::Kind kind) {
       return "cylinder";
     case Shape::Kind::Sphere:
       return "sphere";
+    case Shape::Kind::Torus:
+      return "torus";
     case Shape::Kind::Union:
       return "union";
     case Shape::Kind::Difference:
       return "difference";
+    case Shape::Kind::Intersection:
+      return "intersection";
   }
   return "shape";
 }
@@ -69,16 +82,29 @@ class ShapeBuilder {
   ShapeBuilder(GmshSession& session, std::string part_name)
       : session_(session), part_name_(std::move(part_name)) {}
 
-  /// The volumes (dimension 3 entities) of `shape`.
+  /// The volumes (dimension 3 entities) of `shape`, its transform applied.
   gmsh::vectorpair build(const Shape& shape, const std::string& path) {
     const std::string where = "part \"" + part_name_ + "\", " + kind_name(shape.kind) +
                               (path.empty() ? "" : " at " + path);
     const auto fail = [&where](const std::string& problem) {
       throw InputError(where + ": " + problem);
     };
-    const bool is_boolean =
-        shape.kind == Shape::Kind::Union || shape.kind == Shape::Kind::Difference;
-    if (!is_boolean && !shape.children.empty()) fail("only unions and differences have children");
+    check_transform(shape, fail);  // before building, so that errors come without Gmsh work
+    gmsh::vectorpair volumes = build_untransformed(shape, path, where, fail);
+    session_.run(where + ", transform", [&] { apply_transform(shape, volumes); });
+    return volumes;
+  }
+
+ private:
+  template <class Fail>
+  gmsh::vectorpair build_untransformed(const Shape& shape, const std::string& path,
+                                       const std::string& where, const Fail& fail) {
+    const bool is_boolean = shape.kind == Shape::Kind::Union ||
+                            shape.kind == Shape::Kind::Difference ||
+                            shape.kind == Shape::Kind::Intersection;
+    if (!is_boolean && !shape.children.empty()) {
+      fail("only unions, differences and intersections have children");
+    }
 
     switch (shape.kind) {
       case Shape::Kind::Box: {
@@ -121,23 +147,42 @@ class ShapeBuilder {
           return gmsh::vectorpair{{3, tag}};
         });
       }
+      case Shape::Kind::Torus:
+        return build_torus(shape, where, fail);
       case Shape::Kind::Union:
-      case Shape::Kind::Difference: {
+      case Shape::Kind::Difference:
+      case Shape::Kind::Intersection: {
         if (shape.children.empty()) fail("needs at least one child shape");
+        if (shape.kind == Shape::Kind::Intersection && shape.children.size() < 2) {
+          fail("needs at least two child shapes");
+        }
         const std::string children_path = path.empty() ? "children" : path + ".children";
         gmsh::vectorpair objects = build(shape.children[0], children_path + "[0]");
         gmsh::vectorpair tools;
+        // child_of_input[k]: the child that input volume k (objects, then tools) comes from.
+        std::vector<std::size_t> child_of_input(objects.size(), 0);
         for (std::size_t i = 1; i < shape.children.size(); ++i) {
           const auto child =
               build(shape.children[i], children_path + "[" + std::to_string(i) + "]");
           tools.insert(tools.end(), child.begin(), child.end());
+          child_of_input.insert(child_of_input.end(), child.size(), i);
         }
         if (tools.empty()) return objects;
         gmsh::vectorpair result = session_.run(where, [&] {
-          return shape.kind == Shape::Kind::Union ? fragment_union(objects, tools)
-                                                  : fragment_difference(objects, tools);
+          switch (shape.kind) {
+            case Shape::Kind::Union:
+              return fragment_union(objects, tools);
+            case Shape::Kind::Difference:
+              return fragment_difference(objects, tools);
+            default:
+              return fragment_intersection(objects, tools, child_of_input, shape.children.size());
+          }
         });
-        if (result.empty()) fail("the result is empty (the subtracted shapes cover the first one)");
+        if (result.empty()) {
+          fail(shape.kind == Shape::Kind::Difference
+                   ? "the result is empty (the subtracted shapes cover the first one)"
+                   : "the result is empty (the shapes have no volume in common)");
+        }
         return result;
       }
     }
@@ -145,7 +190,103 @@ class ShapeBuilder {
     return {};
   }
 
- private:
+  template <class Fail>
+  static void check_transform(const Shape& shape, const Fail& fail) {
+    if (!std::isfinite(shape.rotation_angle_deg)) {
+      fail("the rotation angle must be finite, got " + format_number(shape.rotation_angle_deg));
+    }
+    if (!shape.rotation_center.allFinite()) {
+      fail("the rotation center must be finite, got " + format_vector(shape.rotation_center));
+    }
+    const double axis_length = shape.rotation_axis.norm();
+    if (shape.rotation_angle_deg != 0 && (!std::isfinite(axis_length) || axis_length <= 0)) {
+      fail("the rotation axis must be a finite non-zero vector, got " +
+           format_vector(shape.rotation_axis));
+    }
+    if (!shape.translation.allFinite()) {
+      fail("the translation must be finite, got " + format_vector(shape.translation));
+    }
+  }
+
+  /// The shape's rigid transform: rotation about its axis, then translation.
+  static void apply_transform(const Shape& shape, const gmsh::vectorpair& volumes) {
+    if (shape.rotation_angle_deg != 0) {
+      const Vector3& c = shape.rotation_center;
+      const Vector3 a = shape.rotation_axis.normalized();
+      occ::rotate(volumes, c.x(), c.y(), c.z(), a.x(), a.y(), a.z(),
+                  shape.rotation_angle_deg * kRadiansPerDegree);
+    }
+    if (!shape.translation.isZero(0)) {
+      occ::translate(volumes, shape.translation.x(), shape.translation.y(), shape.translation.z());
+    }
+  }
+
+  /// Unit reference direction of a torus: `start_direction`, or the default, made
+  /// perpendicular to the unit `axis`.
+  template <class Fail>
+  static Vector3 torus_reference(const Shape& shape, const Vector3& axis, const Fail& fail) {
+    const auto perpendicular = [&axis](const Vector3& v) {
+      return Vector3(v - v.dot(axis) * axis);
+    };
+    if (!shape.start_direction.isZero(0)) {
+      const Vector3 start = perpendicular(shape.start_direction);
+      if (!(start.norm() > 1e-9 * shape.start_direction.norm())) {
+        fail("the start direction " + format_vector(shape.start_direction) +
+             " must not be parallel to the axis " + format_vector(shape.axis));
+      }
+      return start.normalized();
+    }
+    const Vector3 from_x = perpendicular(Vector3::UnitX());
+    if (from_x.norm() >= kMinReferenceProjection) return from_x.normalized();
+    return perpendicular(Vector3::UnitY()).normalized();
+  }
+
+  /// OpenCASCADE sweeps a torus about +z from +x; it is built so at the origin, then turned so
+  /// that (x, y, z) go to (reference, axis x reference, axis), then moved to the centre.
+  template <class Fail>
+  gmsh::vectorpair build_torus(const Shape& shape, const std::string& where, const Fail& fail) {
+    check_radius(shape, fail);
+    if (!std::isfinite(shape.minor_radius) || shape.minor_radius <= 0 ||
+        !(shape.minor_radius < shape.radius)) {
+      fail("the minor radius must be positive and less than the radius " +
+           format_number(shape.radius) + ", got " + format_number(shape.minor_radius));
+    }
+    if (!std::isfinite(shape.angle_deg) || shape.angle_deg <= 0 || shape.angle_deg > 360) {
+      fail("the angle must be in (0, 360] degrees, got " + format_number(shape.angle_deg));
+    }
+    const double axis_length = shape.axis.norm();
+    if (!shape.center.allFinite() || !std::isfinite(axis_length) || axis_length <= 0) {
+      fail("the center must be finite and the axis a finite non-zero vector, got center " +
+           format_vector(shape.center) + ", axis " + format_vector(shape.axis));
+    }
+    if (!shape.start_direction.allFinite()) {
+      fail("the start direction must be finite, got " + format_vector(shape.start_direction));
+    }
+    const Vector3 e3 = shape.axis / axis_length;
+    Vector3 e1 = torus_reference(shape, e3, fail);
+    const bool full_turn = shape.angle_deg == 360;
+    // A full torus is the same solid whatever its start: turn its seam off the reference plane,
+    // which scenes tend to align with box faces (see kSeamRotationRadians).
+    if (full_turn) e1 = Eigen::AngleAxisd(kSeamRotationRadians, e3) * e1;
+    Matrix3 frame;
+    frame.col(0) = e1;
+    frame.col(1) = e3.cross(e1);
+    frame.col(2) = e3;
+    const Eigen::AngleAxisd turn(frame);
+    return session_.run(where, [&] {
+      const int tag =
+          occ::addTorus(0, 0, 0, shape.radius, shape.minor_radius, -1,
+                        full_turn ? 2 * std::numbers::pi : shape.angle_deg * kRadiansPerDegree);
+      const gmsh::vectorpair volumes{{3, tag}};
+      if (turn.angle() != 0) {
+        occ::rotate(volumes, 0, 0, 0, turn.axis().x(), turn.axis().y(), turn.axis().z(),
+                    turn.angle());
+      }
+      occ::translate(volumes, shape.center.x(), shape.center.y(), shape.center.z());
+      return volumes;
+    });
+  }
+
   template <class Fail>
   static void check_radius(const Shape& shape, const Fail& fail) {
     if (!std::isfinite(shape.radius) || shape.radius <= 0) {
@@ -162,6 +303,33 @@ class ShapeBuilder {
     std::vector<gmsh::vectorpair> pieces_of_input;
     occ::fragment(objects, tools, pieces, pieces_of_input);
     return pieces;
+  }
+
+  /// Intersection as boolean fragments (like the union and difference, and because a child may
+  /// be several volumes): the pieces that come from every child are kept, the others removed.
+  /// `child_of_input` names the child of each input volume, objects first, then tools.
+  static gmsh::vectorpair fragment_intersection(const gmsh::vectorpair& objects,
+                                                const gmsh::vectorpair& tools,
+                                                const std::vector<std::size_t>& child_of_input,
+                                                std::size_t num_children) {
+    gmsh::vectorpair pieces;
+    std::vector<gmsh::vectorpair> pieces_of_input;
+    occ::fragment(objects, tools, pieces, pieces_of_input);
+    std::map<std::pair<int, int>, std::set<std::size_t>> children_of_piece;
+    for (std::size_t input = 0; input < pieces_of_input.size() && input < child_of_input.size();
+         ++input) {
+      for (const auto& piece : pieces_of_input[input]) {
+        children_of_piece[piece].insert(child_of_input[input]);
+      }
+    }
+    gmsh::vectorpair kept, removed;
+    for (const auto& piece : pieces) {
+      const auto found = children_of_piece.find(piece);
+      const bool in_all = found != children_of_piece.end() && found->second.size() == num_children;
+      (in_all ? kept : removed).push_back(piece);
+    }
+    if (!removed.empty()) occ::remove(removed, /*recursive=*/true);
+    return kept;
   }
 
   /// Difference as boolean fragments: the pieces of the objects that are not pieces of any

@@ -165,16 +165,50 @@ class SceneReader {
       shape.center = to_vector3(j.at("cylinder").at("base"));
       shape.axis = to_vector3(j.at("cylinder").at("axis"));
       shape.radius = j.at("cylinder").at("radius").get<double>();
+    } else if (j.contains("torus")) {
+      read_torus(j.at("torus"), json_path_key(path, "torus"), shape);
     } else {
-      const bool is_union = j.contains("union");
-      shape.kind = is_union ? mesh::Shape::Kind::Union : mesh::Shape::Kind::Difference;
-      const std::string key = is_union ? "union" : "difference";
+      const std::string key = j.contains("union") ? "union" : j.contains("difference") ? "difference" : "intersection";
+      shape.kind = key == "union"        ? mesh::Shape::Kind::Union
+                   : key == "difference" ? mesh::Shape::Kind::Difference
+                                         : mesh::Shape::Kind::Intersection;
       const json& children = j.at(key);
       for (std::size_t i = 0; i < children.size(); ++i) {
         shape.children.push_back(read_shape(children[i], json_path_index(json_path_key(path, key), i)));
       }
     }
+    if (j.contains("transform")) {
+      const json& transform = j.at("transform");
+      shape.translation = to_vector3(transform.at("translate"));
+      if (transform.contains("rotate")) {
+        const json& rotate = transform.at("rotate");
+        shape.rotation_axis = to_vector3(rotate.at("axis"));
+        shape.rotation_center = to_vector3(rotate.at("center"));
+        shape.rotation_angle_deg = rotate.at("angle_deg").get<double>();
+      }
+    }
     return shape;
+  }
+
+  void read_torus(const json& j, const std::string& path, mesh::Shape& shape) {
+    shape.kind = mesh::Shape::Kind::Torus;
+    shape.center = to_vector3(j.at("center"));
+    shape.axis = to_vector3(j.at("axis"));
+    shape.radius = j.at("radius").get<double>();
+    shape.minor_radius = j.at("minor_radius").get<double>();
+    shape.angle_deg = j.at("angle_deg").get<double>();
+    if (!(shape.minor_radius < shape.radius)) {
+      error(json_path_key(path, "minor_radius"), "must be < radius (" + format_number(shape.radius) + "), got " +
+                                                     format_number(shape.minor_radius));
+    }
+    if (j.contains("start_direction")) {
+      shape.start_direction = to_vector3(j.at("start_direction"));
+      const Vector3 axis = shape.axis.normalized();
+      const Vector3 start = shape.start_direction.normalized();
+      if ((start - start.dot(axis) * axis).norm() < 1e-9) {
+        error(json_path_key(path, "start_direction"), "must not be parallel to axis");
+      }
+    }
   }
 
   MeshSourceConfig read_mesh(const json& body, const std::string& path) {

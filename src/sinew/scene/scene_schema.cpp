@@ -189,9 +189,12 @@ SchemaNode node_selector_definition() {
 }
 
 SchemaNode shape_definition() {
-  return one_of("", "A solid for mesh generation: a primitive or a boolean combination",
+  const mesh::Shape defaults;
+  return one_of("",
+                "A solid for mesh generation: a primitive or a boolean combination, optionally moved by a rigid "
+                "transform",
                 {
-                    object("box", "axis-aligned box",
+                    object("box", "box, axis-aligned before the shape's transform",
                            {
                                vec3("min", "lower corner (length)").required(),
                                vec3("max", "upper corner, > min componentwise (length)").required(),
@@ -209,10 +212,51 @@ SchemaNode shape_definition() {
                                    .nonzero(),
                                number("radius", "radius (length)").required().above(0),
                            }),
+                    object("torus",
+                           "solid torus, or the segment of one swept through angle_deg (a bent rod with flat "
+                           "disk ends)",
+                           {
+                               vec3("center", "center of the torus, on its axis (length)").required(),
+                               vec3("axis",
+                                    "normal of the plane of the centre circle; the sweep turns about it by the "
+                                    "right-hand rule")
+                                   .required()
+                                   .nonzero(),
+                               number("radius", "major radius: of the circle through the tube centres (length)")
+                                   .required()
+                                   .above(0),
+                               number("minor_radius", "tube radius, < radius (length)").required().above(0),
+                               number("angle_deg", "swept angle (degrees), from start_direction about axis")
+                                   .above(0)
+                                   .max(360)
+                                   .fallback(defaults.angle_deg),
+                               vec3("start_direction",
+                                    "direction from the center to the centre of the tube's first end (its part "
+                                    "perpendicular to axis counts); default: +x projected onto the torus plane, or +y "
+                                    "projected when the axis is along x")
+                                   .nonzero(),
+                           }),
                     array("union", "all shapes fused", ref("", "", "shape")).items(1),
                     array("difference", "the first shape minus all the others", ref("", "", "shape")).items(2),
+                    array("intersection", "the region common to all the shapes", ref("", "", "shape")).items(2),
+                    object("transform",
+                           "rigid transform of this shape, applied after it is built (and after its children's own "
+                           "transforms): first rotate, then translate",
+                           {
+                               object("rotate", "rotation about an axis through a point (none when omitted)",
+                                      {
+                                          vec3("axis", "rotation axis direction, normalized on use")
+                                              .required()
+                                              .nonzero(),
+                                          number("angle_deg", "angle (degrees, right-hand rule)").required(),
+                                          vec3("center", "a point on the axis (length)")
+                                              .fallback(vec3_json(defaults.rotation_center)),
+                                      }),
+                               vec3("translate", "translation, applied after the rotation (length)")
+                                   .fallback(vec3_json(defaults.translation)),
+                           }),
                 },
-                {"box", "sphere", "cylinder", "union", "difference"});
+                {"box", "sphere", "cylinder", "torus", "union", "difference", "intersection"});
 }
 
 // ---------------------------------------------------------------- top-level parts
@@ -676,12 +720,36 @@ on one node intersect (two planes leave a line).
 
 A [shape](#def-shape) is an object with exactly one key: `box` (`min`, `max`), `sphere`
 (`center`, `radius`), `cylinder` (`base` = center of the base disk, `axis` = base-to-top vector
-whose length is the height, `radius`), `union` (array of shapes, all fused) or `difference`
-(array of shapes, the first minus all the others). Shapes nest:
+whose length is the height, `radius`), `torus` (`center`, `axis` = normal of its plane, `radius`
+= major radius, `minor_radius`, `angle_deg`, `start_direction`), `union` (array of shapes, all
+fused), `difference` (array of shapes, the first minus all the others) or `intersection` (array
+of shapes, the region common to all). Shapes nest:
 
 ```json
 {"difference": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}},
                 {"cylinder": {"base": [0.5, 0.5, 0], "axis": [0, 0, 1], "radius": 0.2}}]}
+```
+
+A torus with `angle_deg` below 360 is a bent rod with flat ends: with unit axis a and unit start
+direction s (`start_direction` made perpendicular to a; by default +x projected onto the torus
+plane, or +y when a is along x), its centre line is center + radius (cos φ s + sin φ (a × s)) for
+φ from 0 to `angle_deg`.
+
+Any shape may also hold `"transform": {"rotate": {"axis": [..], "angle_deg": θ, "center": [..]},
+"translate": [..]}` (both optional). It moves the shape once built (a boolean after its children
+are combined, each child moved first by its own transform): a point x goes to
+
+    x' = R(θ, axis) (x - center) + center + translate.
+
+Parts for a slab slanted at 45 degrees about y and raised by 1.5 (its lowest edge just above
+z = 0), and a rod of radius 0.1 bent through a quarter turn (from +x towards +y) that rests on
+the plane z = 0:
+
+```json
+[{"region": "slope", "shape": {"box": {"min": [-2, -1, -0.1], "max": [2, 1, 0.1]},
+                               "transform": {"rotate": {"axis": [0, 1, 0], "angle_deg": 45}, "translate": [0, 0, 1.5]}}},
+ {"region": "bar", "shape": {"torus": {"center": [0, 0, 0.1], "axis": [0, 0, 1], "radius": 1,
+                                       "minor_radius": 0.1, "angle_deg": 90}}}]
 ```
 
 ## Motions and amplitudes
