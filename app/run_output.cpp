@@ -13,8 +13,12 @@ namespace sinew::app {
 RunOutput::RunOutput(std::string directory, const fem::Problem& problem, const StaticModel& model,
                      const scene::OutputConfig& config)
     : directory_(std::move(directory)), problem_(problem), model_(model), config_(config) {
-  std::vector<std::string> columns{"step", "increment", "lambda", "step_size", "newton_iterations", "residual",
-                                   "force_scale", "energy", "cuts"};
+  std::vector<std::string> columns =
+      model.mass ? std::vector<std::string>{"step", "time", "step_size", "newton_iterations", "residual", "cuts",
+                                            "kinetic_energy", "elastic_energy", "gravitational_energy",
+                                            "contact_energy", "total_energy"}
+                 : std::vector<std::string>{"step", "increment", "lambda", "step_size", "newton_iterations",
+                                            "residual", "force_scale", "energy", "cuts"};
   for (const auto& p : problem.prescribed) reaction_names_.push_back(p.name);
   for (const auto& p : problem.planar) reaction_names_.push_back(p.name);
   for (const auto& r : problem.rigid_bodies) reaction_names_.push_back(r.name);
@@ -46,15 +50,53 @@ RunOutput::RunOutput(std::string directory, const fem::Problem& problem, const S
 }
 
 void RunOutput::write_step(const solver::StepRecord& step, const fem::State& state) {
-  std::vector<io::CsvTable::Cell> row{static_cast<long long>(step.step),
-                                      static_cast<long long>(step.increment),
-                                      step.lambda,
-                                      step.step_size,
-                                      static_cast<long long>(step.newton_iterations),
-                                      step.residual,
-                                      step.force_scale,
-                                      step.energy,
-                                      static_cast<long long>(step.cuts)};
+  write_row({static_cast<long long>(step.step), static_cast<long long>(step.increment), step.lambda, step.step_size,
+             static_cast<long long>(step.newton_iterations), step.residual, step.force_scale, step.energy,
+             static_cast<long long>(step.cuts)},
+            state);
+}
+
+DynamicEnergies RunOutput::energies(const fem::State& state, const NodalVectors& velocity) const {
+  DynamicEnergies e;
+  const VectorX v = velocity.reshaped<Eigen::RowMajor>();  // node-major x, y, z
+  e.kinetic = 0.5 * v.dot(model_.mass->multiply(v));
+  e.elastic = model_.elastic->value(state.x);
+  e.gravitational = model_.external->value(state.x);
+  if (model_.contact) {
+    model_.contact->update(state.x);
+    e.contact = model_.contact->value(state.x);
+  }
+  return e;
+}
+
+void RunOutput::write_time_step(const solver::TimeStepRecord& step, const fem::State& state,
+                                const NodalVectors& velocity) {
+  const DynamicEnergies e = energies(state, velocity);
+  write_row({static_cast<long long>(step.step), step.time, step.step_size, static_cast<long long>(step.newton_iterations),
+             step.residual, static_cast<long long>(step.cuts), e.kinetic, e.elastic, e.gravitational, e.contact,
+             e.total()},
+            state, /*flush=*/false);
+}
+
+void RunOutput::write_time_iteration(const solver::TimeStepRecord& step, const solver::IterationRecord& it) {
+  newton_->append({static_cast<long long>(step.step + 1), step.time, static_cast<long long>(it.iteration), it.residual,
+                   it.force_scale, it.energy, it.step_length, static_cast<long long>(it.line_search_steps),
+                   static_cast<long long>(it.linear_iterations), it.increment, it.regularization});
+}
+
+void RunOutput::write_output(int output, double time, const fem::State& state, const NodalVectors& velocity) {
+  // Time steps are many: the CSV files are rewritten at output times, not after every step.
+  steps_->flush();
+  newton_->flush();
+  if (!config_.vtu) return;
+  const std::string name = fmt::format("vtu/output_{:04d}.vtu", output);
+  io::VtuData data = vtu_data(state);
+  data.point_fields.push_back({"velocity", MatrixX(velocity)});
+  io::write_vtu(directory_ + "/" + name, data);
+  series_->add(time, name);
+}
+
+void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State& state, bool flush) {
   const auto gradient = model_.objective->full_gradient(state);
   for (const auto& reaction : fem::compute_reactions(problem_, *model_.dofs, state, gradient)) {
     for (int k = 0; k < 3; ++k) row.emplace_back(reaction.force[k]);
@@ -77,8 +119,30 @@ void RunOutput::write_step(const solver::StepRecord& step, const fem::State& sta
       }
     }
   }
-  steps_->add_row(row);
+  if (flush) {
+    steps_->add_row(row);
+    newton_->flush();
+  } else {
+    steps_->append(row);
+  }
+}
+
+void RunOutput::write_dynamic_summary(const solver::DynamicResult& result, double wall_seconds,
+                                      const std::string& scene_name) {
+  steps_->flush();
   newton_->flush();
+  nlohmann::json j;
+  j["scene"] = scene_name;
+  j["success"] = result.success;
+  j["message"] = result.message;
+  j["time_reached"] = result.time;
+  j["steps"] = result.steps;
+  j["newton_iterations"] = result.newton_iterations;
+  j["step_cuts"] = result.cuts;
+  j["outputs"] = result.outputs;
+  j["min_time_step"] = result.min_step;
+  j["max_time_step"] = result.max_step;
+  finish_summary(j, wall_seconds, result.times);
 }
 
 void RunOutput::write_iteration(const solver::StepRecord& step, const solver::IterationRecord& it) {
@@ -122,6 +186,18 @@ void RunOutput::write_increment(int increment, int increments, const fem::State&
   series_->add(state.lambda, name);
 }
 
+void RunOutput::finish_summary(nlohmann::json& j, double wall_seconds, const solver::PhaseTimes& times) const {
+  j["nodes"] = problem_.mesh.num_nodes();
+  j["tets"] = problem_.mesh.num_tets();
+  j["dofs"] = model_.dofs->num_dofs();
+  j["wall_seconds"] = wall_seconds;
+  j["seconds"] = {{"forces_and_stiffness", times.forces_and_stiffness},
+                  {"linear_solve", times.linear_solve},
+                  {"line_search", times.line_search},
+                  {"other", std::max(0.0, wall_seconds - times.total())}};
+  io::write_file_atomically(directory_ + "/summary.json", j.dump(2) + "\n");
+}
+
 void RunOutput::write_summary(const solver::StaticResult& result, double wall_seconds, const std::string& scene_name) {
   nlohmann::json j;
   j["scene"] = scene_name;
@@ -132,15 +208,7 @@ void RunOutput::write_summary(const solver::StaticResult& result, double wall_se
   j["steps"] = result.steps;
   j["newton_iterations"] = result.newton_iterations;
   j["step_cuts"] = result.cuts;
-  j["nodes"] = problem_.mesh.num_nodes();
-  j["tets"] = problem_.mesh.num_tets();
-  j["dofs"] = model_.dofs->num_dofs();
-  j["wall_seconds"] = wall_seconds;
-  j["seconds"] = {{"forces_and_stiffness", result.times.forces_and_stiffness},
-                  {"linear_solve", result.times.linear_solve},
-                  {"line_search", result.times.line_search},
-                  {"other", std::max(0.0, wall_seconds - result.times.total())}};
-  io::write_file_atomically(directory_ + "/summary.json", j.dump(2) + "\n");
+  finish_summary(j, wall_seconds, result.times);
 }
 
 }  // namespace sinew::app

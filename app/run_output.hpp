@@ -16,14 +16,26 @@
 #include <memory>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "sinew/fem/problem.hpp"
 #include "sinew/io/csv.hpp"
 #include "sinew/io/vtu.hpp"
 #include "sinew/scene/scene_config.hpp"
+#include "sinew/solver/dynamic_solver.hpp"
 #include "sinew/solver/static_solver.hpp"
 #include "static_model.hpp"
 
 namespace sinew::app {
+
+/// Energies of a dynamic state (energy unit).
+struct DynamicEnergies {
+  double kinetic = 0;        ///< (1/2) vᵀ M v
+  double elastic = 0;
+  double gravitational = 0;  ///< potential of gravity and nodal loads
+  double contact = 0;
+  double total() const { return kinetic + elastic + gravitational + contact; }
+};
 
 class RunOutput {
  public:
@@ -36,12 +48,23 @@ class RunOutput {
   /// VTU of increment k (if due per `every`), added to the .pvd series.
   void write_increment(int increment, int increments, const fem::State& state);
   void write_state(const std::string& file_name, const fem::State& state);
+  // Dynamics: steps.csv has time and the energies instead of lambda; VTUs per output time carry
+  // the velocity.
+  void write_time_step(const solver::TimeStepRecord& step, const fem::State& state, const NodalVectors& velocity);
+  void write_time_iteration(const solver::TimeStepRecord& step, const solver::IterationRecord& iteration);
+  void write_output(int output, double time, const fem::State& state, const NodalVectors& velocity);
+  void write_dynamic_summary(const solver::DynamicResult& result, double wall_seconds, const std::string& scene_name);
+  DynamicEnergies energies(const fem::State& state, const NodalVectors& velocity) const;
   void write_summary(const solver::StaticResult& result, double wall_seconds, const std::string& scene_name);
 
   const std::string& directory() const { return directory_; }
 
  private:
   io::VtuData vtu_data(const fem::State& state) const;
+  /// Adds the mesh sizes and the time per phase to `j` and writes summary.json.
+  void finish_summary(nlohmann::json& j, double wall_seconds, const solver::PhaseTimes& times) const;
+  /// Adds a steps.csv row with the reactions and contact figures; `flush` rewrites the file now.
+  void write_row(std::vector<io::CsvTable::Cell> row, const fem::State& state, bool flush = true);
   std::string directory_;
   const fem::Problem& problem_;
   const StaticModel& model_;

@@ -15,6 +15,65 @@
 
 namespace sinew::app {
 
+namespace {
+
+RunReport run_dynamics(const scene::SceneConfig& scene, const StaticModel& model,
+                       RunOutput& output, const RunOptions& options, std::chrono::steady_clock::time_point start) {
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  const solver::DynamicOptions& dyn = scene.dynamics.options;
+  using Integrator = solver::DynamicOptions::Integrator;
+  if (dyn.integrator == Integrator::Explicit)
+    logger().info("explicit central differences: critical time step {:.4g}, step {:.4g} ({} x), about {:.0f} steps",
+                  model.critical_time_step, dyn.explicit_safety * model.critical_time_step, dyn.explicit_safety,
+                  std::ceil(dyn.end_time / (dyn.explicit_safety * model.critical_time_step)));
+  io::ProgressBar bar({.total = dyn.end_time, .label = scene.name});
+  auto log_line = [&](auto level, const std::string& text) {
+    if (bar.enabled()) fmt::print(stderr, "\r\033[K");
+    logger().log(level, text);
+  };
+  solver::DynamicCallbacks callbacks;
+  callbacks.on_iteration = [&](const solver::TimeStepRecord& step, const solver::IterationRecord& it) {
+    output.write_time_iteration(step, it);
+  };
+  callbacks.on_step = [&](const solver::TimeStepRecord& step, const fem::State& state, const NodalVectors& velocity) {
+    output.write_time_step(step, state, velocity);
+    if (options.log_steps && dyn.integrator != Integrator::Explicit)
+      log_line(spdlog::level::info, fmt::format("step {:5d}  t {:.6g}  h {:.3g}  newton {:2d}  |r| {:.2e}", step.step,
+                                                step.time, step.step_size, step.newton_iterations, step.residual));
+    bar.update(step.time, fmt::format("t {:.4g}  h {:.2g}", step.time, step.step_size));
+  };
+  callbacks.on_output = [&](int k, const solver::TimeStepRecord& step, const fem::State& state,
+                            const NodalVectors& velocity) { output.write_output(k, step.time, state, velocity); };
+  callbacks.on_cut = [&](const solver::TimeStepRecord& step, const std::string& why) {
+    log_line(spdlog::level::warn,
+             fmt::format("time step to t = {:.6g} (h = {:.3g}) failed, halving: {}", step.time, step.step_size, why));
+  };
+  solver::DynamicSetup setup;
+  setup.characteristic_length = model.setup.characteristic_length;
+  setup.reference_force = model.setup.reference_force;
+  setup.critical_time_step = model.critical_time_step;
+  RunReport report;
+  report.dynamic_result = solver::solve_dynamic(*model.objective, {model.inertia.get(), model.viscosity.get()}, dyn,
+                                                scene.solver, setup, callbacks);
+  bar.finish();
+  report.wall_seconds = elapsed();
+  report.success = report.dynamic_result.success;
+  report.message = report.dynamic_result.message;
+  if (!report.success) output.write_state("last_converged.vtu", report.dynamic_result.last_state);
+  output.write_dynamic_summary(report.dynamic_result, report.wall_seconds, scene.name);
+  const auto& r = report.dynamic_result;
+  const auto& t = r.times;
+  const double total = std::max(report.wall_seconds, 1e-12);
+  logger().info("{} at t = {:.6g} in {:.2f} s: {} steps (h {:.3g} .. {:.3g}), {} Newton iterations, {} cuts; forces "
+                "and stiffness {:.0f} %, linear solve {:.0f} %, line search {:.0f} %, other {:.0f} %",
+                report.success ? "done" : "stopped", r.time, report.wall_seconds, r.steps, r.min_step, r.max_step,
+                r.newton_iterations, r.cuts, 100 * t.forces_and_stiffness / total, 100 * t.linear_solve / total,
+                100 * t.line_search / total, 100 * std::max(0.0, total - t.total()) / total);
+  return report;
+}
+
+}  // namespace
+
 RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -32,11 +91,13 @@ RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) 
                         setup.body_names[static_cast<std::size_t>(b)], penalty(a, b));
     contact = ContactInput{std::move(setup.geometry), setup.options, std::move(setup.body_names)};
   }
-  const StaticModel model = make_static_model(problem, scene.solver, contact ? &*contact : nullptr);
+  const StaticModel model =
+      make_static_model(problem, scene.solver, contact ? &*contact : nullptr, &scene.dynamics);
   logger().info("scene \"{}\": {} nodes, {} tets, {} unknowns, {} rigid bodies", scene.name, problem.mesh.num_nodes(),
                 problem.mesh.num_tets(), model.dofs->num_dofs(), problem.rigid_bodies.size());
 
   RunOutput output(options.output_directory, problem, model, scene.output);
+  if (scene.dynamics.enabled) return run_dynamics(scene, model, output, options, start);
   const int increments = std::max(1, scene.solver.stepping.increments);
   io::ProgressBar bar({.total = 1.0, .label = scene.name});
   auto log_line = [&](auto level, const std::string& text) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "sinew/scene/scene_config.hpp"
+#include "sinew/solver/dynamic_solver.hpp"
 #include "sinew/solver/static_solver.hpp"
 
 namespace sinew::app {
@@ -19,7 +20,8 @@ struct RunReport {
   bool success = false;
   std::string message;
   double wall_seconds = 0;
-  solver::StaticResult result;
+  solver::StaticResult result;         ///< static analyses
+  solver::DynamicResult dynamic_result;  ///< dynamic analyses
 };
 
 /// Builds and solves the scene. Input errors (InputError) propagate before anything is

@@ -2,12 +2,15 @@
 
 #include <cmath>
 
+#include "sinew/fem/mass_matrix.hpp"
+#include "sinew/fem/stable_time_step.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
 
 namespace sinew::app {
 
 StaticModel make_static_model(const fem::Problem& problem, const solver::StaticSolverOptions& options,
-                              const ContactInput* contact) {
+                              const ContactInput* contact, const scene::DynamicsConfig* dynamics) {
+  if (dynamics && !dynamics->enabled) dynamics = nullptr;
   StaticModel model;
   const auto& mesh = problem.mesh;
   model.tet_material.resize(static_cast<std::size_t>(mesh.num_tets()));
@@ -19,12 +22,40 @@ StaticModel make_static_model(const fem::Problem& problem, const solver::StaticS
       fem::ElasticEnergyOptions{.project_hessians = options.newton.project_element_hessians});
   model.external = std::make_unique<fem::ExternalForceEnergy>(
       fem::lumped_masses(mesh.rest, mesh.tets, mesh.region, problem.region_density), problem.gravity,
-      fem::Amplitude{}, problem.forces, mesh.num_nodes());
+      dynamics ? fem::Amplitude{{{0.0, 1.0}}} : fem::Amplitude{}, problem.forces, mesh.num_nodes());
   std::vector<Energy*> terms{model.elastic.get(), model.external.get()};
   if (contact) {
     model.contact = std::make_unique<contact::ContactEnergy>(contact->geometry, contact->options);
     model.contact_body_names = contact->body_names;
     terms.push_back(model.contact.get());
+  }
+  if (dynamics) {
+    using Integrator = solver::DynamicOptions::Integrator;
+    const Integrator integrator = dynamics->options.integrator;
+    const fem::MassKind kind = integrator == Integrator::Explicit ? fem::MassKind::Lumped : dynamics->mass;
+    model.mass = std::make_unique<BlockSparseMatrix>(
+        fem::block_mass_matrix(fem::mass_matrix(mesh.rest, mesh.tets, mesh.region, problem.region_density, kind)));
+    if (integrator != Integrator::Quasistatic) {
+      model.inertia = std::make_unique<fem::QuadraticEnergy>("inertia", *model.mass);
+      terms.push_back(model.inertia.get());
+    }
+    if (dynamics->mass_damping > 0 || dynamics->stiffness_damping > 0) {
+      // K0: the elastic stiffness at rest.
+      std::vector<std::pair<Index, Index>> pairs;
+      model.elastic->hessian_pattern(pairs);
+      BlockSparseMatrix K0;
+      K0.set_pattern(mesh.num_nodes(), std::move(pairs));
+      model.elastic->bind_pattern(K0);
+      model.elastic->add_hessian(mesh.rest, K0);
+      model.viscosity = std::make_unique<fem::QuadraticEnergy>(
+          "viscosity", fem::linear_combination(dynamics->mass_damping, *model.mass, dynamics->stiffness_damping, K0));
+      terms.push_back(model.viscosity.get());
+    }
+    if (integrator == Integrator::Explicit) {
+      VectorX tet_density(mesh.num_tets());
+      for (Index t = 0; t < mesh.num_tets(); ++t) tet_density[t] = problem.region_density[static_cast<std::size_t>(mesh.region[t])];
+      model.critical_time_step = fem::critical_time_step(mesh.rest, mesh.tets, model.tet_material, tet_density).dt;
+    }
   }
   model.objective = std::make_unique<solver::Objective>(*model.dofs, std::move(terms), mesh.num_nodes());
 

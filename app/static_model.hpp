@@ -10,6 +10,8 @@
 #include "sinew/fem/elastic_energy.hpp"
 #include "sinew/fem/external_force_energy.hpp"
 #include "sinew/fem/problem.hpp"
+#include "sinew/fem/quadratic_energy.hpp"
+#include "sinew/scene/scene_config.hpp"
 #include "sinew/solver/static_solver.hpp"
 
 namespace sinew::app {
@@ -23,6 +25,11 @@ struct StaticModel {
   std::unique_ptr<solver::Objective> objective;
   std::vector<material::MaterialPtr> tet_material;  ///< #T, nullptr for rigid tets
   solver::StaticSetup setup;                         ///< scales and quasi-viscosity
+  // Dynamics (empty for a static analysis).
+  std::unique_ptr<BlockSparseMatrix> mass;           ///< M (lumped or consistent), for kinetic energy
+  std::unique_ptr<fem::QuadraticEnergy> inertia;     ///< implicit Euler and explicit
+  std::unique_ptr<fem::QuadraticEnergy> viscosity;   ///< D = mass_damping M + stiffness_damping K0
+  double critical_time_step = 0;                     ///< explicit: 2 / omega_max of the lumped system
 };
 
 /// The contact term's input, when the scene has contact.
@@ -33,7 +40,9 @@ struct ContactInput {
 };
 
 /// `problem` must outlive the model. With `contact`, a contact energy joins the total potential.
+/// With `dynamics` (enabled), the inertia and viscosity terms of time integration join it too,
+/// and gravity acts in full from t = 0.
 StaticModel make_static_model(const fem::Problem& problem, const solver::StaticSolverOptions& options,
-                              const ContactInput* contact = nullptr);
+                              const ContactInput* contact = nullptr, const scene::DynamicsConfig* dynamics = nullptr);
 
 }  // namespace sinew::app

@@ -216,11 +216,12 @@ inline fs::path example_path(const std::string& name) {
   return fs::path(SINEW_SOURCE_DIR) / "examples" / (name + ".json");
 }
 
-/// Loads examples/<name>.json and runs it through the library into `<directory>/out`.
-inline ExampleRun run_example(const std::string& name, const ScratchDirectory& directory) {
+/// Runs `config` through the library into `<directory>/<subdirectory>`.
+inline ExampleRun run_config(scene::SceneConfig config, const ScratchDirectory& directory, const std::string& name,
+                             const std::string& subdirectory = "out") {
   ExampleRun run;
-  run.config = scene::load_scene_file(example_path(name).string());
-  run.output = directory.path() / "out";
+  run.config = std::move(config);
+  run.output = directory.path() / subdirectory;
   app::RunOptions options;
   options.output_directory = run.output.string();
   options.progress_bar = false;
@@ -231,6 +232,11 @@ inline ExampleRun run_example(const std::string& name, const ScratchDirectory& d
   std::printf("[ example  ] %s: %.2f s, %s\n", name.c_str(), run.seconds, run.report.message.c_str());
   ::testing::Test::RecordProperty("seconds", std::to_string(run.seconds));
   return run;
+}
+
+/// Loads examples/<name>.json and runs it through the library into `<directory>/out`.
+inline ExampleRun run_example(const std::string& name, const ScratchDirectory& directory) {
+  return run_config(scene::load_scene_file(example_path(name).string()), directory, name);
 }
 
 /// What every successful run writes: a .pvd listing increment 0 (the rest state) and every

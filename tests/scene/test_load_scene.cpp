@@ -551,3 +551,36 @@ TEST(LoadSceneErrors, BodyNamesCannotHoldASlash) {
 
 }  // namespace
 }  // namespace sinew::scene
+
+namespace sinew::scene {
+namespace {
+
+TEST(LoadSceneDynamics, SectionIsReadWithDefaultsAndBadValuesNameTheirPath) {
+  json scene = minimal_scene();
+  scene["dynamics"] = {{"integrator", "explicit"}, {"end_time", 2.0}, {"output_interval", 0.5}, {"mass_damping", 3.0}};
+  const SceneConfig config = parse_scene(scene, "");
+  EXPECT_TRUE(config.dynamics.enabled);
+  EXPECT_EQ(config.dynamics.options.integrator, solver::DynamicOptions::Integrator::Explicit);
+  EXPECT_EQ(config.dynamics.options.end_time, 2.0);
+  EXPECT_EQ(config.dynamics.options.output_interval, 0.5);
+  EXPECT_EQ(config.dynamics.options.time_step, 0.0);  // default: output_interval / 10
+  EXPECT_EQ(config.dynamics.mass, fem::MassKind::Lumped);
+  EXPECT_EQ(config.dynamics.mass_damping, 3.0);
+  EXPECT_EQ(config.dynamics.stiffness_damping, 0.0);
+  EXPECT_FALSE(parse_scene(minimal_scene(), "").dynamics.enabled);
+
+  scene["dynamics"]["end_time"] = -1.0;
+  EXPECT_EQ(parse_error(scene), "dynamics.end_time: must be > 0, got -1");
+  scene["dynamics"]["end_time"] = 1.0;
+  scene["dynamics"]["mass_damping"] = -2.0;
+  EXPECT_EQ(parse_error(scene), "dynamics.mass_damping: must be >= 0, got -2");
+  scene["dynamics"].erase("mass_damping");
+  scene["dynamics"]["integrator"] = "newmark";
+  EXPECT_THAT(parse_error(scene), HasSubstr("dynamics.integrator"));
+  scene["dynamics"]["integrator"] = "implicit-euler";
+  scene["dynamics"].erase("output_interval");
+  EXPECT_THAT(parse_error(scene), HasSubstr("dynamics.output_interval"));
+}
+
+}  // namespace
+}  // namespace sinew::scene

@@ -107,6 +107,7 @@ class SceneReader {
 
     if (scene.contains("contact")) config.contact = read_contact(scene.at("contact"), config);
     config.solver = read_solver(scene.at("solver"));
+    if (scene.contains("dynamics")) config.dynamics = read_dynamics(scene.at("dynamics"));
     config.output.vtu = scene.at("output").at("vtu").get<bool>();
     config.output.every = scene.at("output").at("every").get<int>();
     return config;
@@ -462,6 +463,28 @@ class SceneReader {
       if (name == name_of(value)) return value;
     }
     return *values.begin();  // unreachable: the schema allows only these names
+  }
+
+  static DynamicsConfig read_dynamics(const json& j) {
+    using Integrator = solver::DynamicOptions::Integrator;
+    DynamicsConfig d;
+    d.enabled = true;
+    const std::string integrator = j.at("integrator").get<std::string>();
+    d.options.integrator = integrator == "explicit"      ? Integrator::Explicit
+                           : integrator == "quasistatic" ? Integrator::Quasistatic
+                                                         : Integrator::ImplicitEuler;
+    d.options.end_time = j.at("end_time").get<double>();
+    d.options.output_interval = j.at("output_interval").get<double>();
+    if (j.contains("time_step")) d.options.time_step = j.at("time_step").get<double>();
+    if (j.contains("max_time_step")) d.options.max_time_step = j.at("max_time_step").get<double>();
+    if (j.contains("min_time_step")) d.options.min_time_step = j.at("min_time_step").get<double>();
+    d.options.growth = j.at("growth").get<double>();
+    d.options.easy_iterations = j.at("easy_iterations").get<int>();
+    d.options.explicit_safety = j.at("explicit_safety").get<double>();
+    d.mass = j.at("mass").get<std::string>() == "consistent" ? fem::MassKind::Consistent : fem::MassKind::Lumped;
+    d.mass_damping = j.at("mass_damping").get<double>();
+    d.stiffness_damping = j.at("stiffness_damping").get<double>();
+    return d;
   }
 
   static solver::StaticSolverOptions read_solver(const json& j) {

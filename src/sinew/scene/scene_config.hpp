@@ -12,6 +12,7 @@
 #include "sinew/fem/constraints_config.hpp"
 #include "sinew/material/material_spec.hpp"
 #include "sinew/mesh/generate.hpp"
+#include "sinew/fem/mass_matrix.hpp"
 #include "sinew/solver/solver_config.hpp"
 
 namespace sinew::scene {
@@ -109,6 +110,17 @@ struct ContactConfig {
   std::vector<ContactPairConfig> pairs;
 };
 
+/// Time integration instead of load stepping (absent: a static analysis).
+struct DynamicsConfig {
+  bool enabled = false;
+  solver::DynamicOptions options;
+  fem::MassKind mass = fem::MassKind::Lumped;  ///< explicit always uses the lumped mass
+  /// Rayleigh viscosity D = mass_damping M + stiffness_damping K0 (K0 the elastic stiffness at
+  /// rest): mass_damping in 1/time, stiffness_damping in time.
+  double mass_damping = 0;
+  double stiffness_damping = 0;
+};
+
 struct OutputConfig {
   bool vtu = true;        ///< write a .vtu per output step and a .pvd series
   int every = 1;          ///< write every n-th increment (the last one always)
@@ -125,6 +137,7 @@ struct SceneConfig {
   LoadsConfig loads;
   ContactConfig contact;
   solver::StaticSolverOptions solver;
+  DynamicsConfig dynamics;
   OutputConfig output;
 };
 

@@ -554,6 +554,49 @@ SchemaNode solver_schema() {
       .fallback(json::object());
 }
 
+SchemaNode dynamics_schema() {
+  const DynamicsConfig defaults;
+  const auto& o = defaults.options;
+  return object("dynamics",
+                "time integration instead of load stepping (paper section 4): implicit Euler with inertia and "
+                "viscosity (the seed's), quasistatic (viscosity, no inertia) or explicit central differences. "
+                "Prescribed motions follow lambda = t / end_time; gravity and loads act in full from t = 0. The "
+                "solver section's newton and linear settings apply to every implicit step.",
+                {
+                    string("integrator", "implicit-euler, quasistatic or explicit")
+                        .allowed({"implicit-euler", "quasistatic", "explicit"})
+                        .fallback("implicit-euler"),
+                    number("end_time", "simulated time (time)").required().above(0),
+                    number("output_interval", "VTU/PVD output every this much simulated time (time)")
+                        .required()
+                        .above(0),
+                    number("time_step", "first step of the implicit integrators (time); default output_interval / 10")
+                        .above(0),
+                    number("max_time_step", "upper bound of the adaptive step (time); default output_interval")
+                        .above(0),
+                    number("min_time_step",
+                           "a step halved below this fails the run (time); default 1e-6 of the first step")
+                        .above(0),
+                    number("growth", "step growth after an easy step").min(1).fallback(o.growth),
+                    integer("easy_iterations", "Newton iterations at or below which a step counts as easy")
+                        .min(0)
+                        .fallback(o.easy_iterations),
+                    string("mass", "lumped (rho V / 4 per node) or consistent mass matrix (implicit only)")
+                        .allowed({"lumped", "consistent"})
+                        .fallback("lumped"),
+                    number("mass_damping", "Rayleigh viscosity D = mass_damping M + stiffness_damping K0: 1/time")
+                        .min(0)
+                        .fallback(defaults.mass_damping),
+                    number("stiffness_damping", "... and time (K0: elastic stiffness at rest)")
+                        .min(0)
+                        .fallback(defaults.stiffness_damping),
+                    number("explicit_safety", "explicit step as a fraction of the critical step 2 / omega_max")
+                        .above(0)
+                        .max(1)
+                        .fallback(o.explicit_safety),
+                });
+}
+
 SchemaNode output_schema() {
   const OutputConfig defaults;
   return object("output", "what is written",
@@ -584,6 +627,7 @@ Schema build_scene_schema() {
                            loads_schema(),
                            contact_schema(),
                            solver_schema(),
+                           dynamics_schema(),
                            output_schema(),
                        });
   schema.definitions["node_selector"] = node_selector_definition();

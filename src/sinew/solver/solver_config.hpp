@@ -49,3 +49,28 @@ struct StaticSolverOptions {
 };
 
 }  // namespace sinew::solver
+
+namespace sinew::solver {
+
+/// Time integration (paper section 4, dissertation sections 4.8 and 8.2). Times in the scene's
+/// time unit. Prescribed motions follow the load parameter lambda = t / end_time; gravity and
+/// nodal loads act in full from t = 0.
+struct DynamicOptions {
+  enum class Integrator {
+    ImplicitEuler,  ///< inertia + viscosity + potential, one Newton solve per step (the seed's)
+    Quasistatic,    ///< viscosity + potential, no inertia
+    Explicit        ///< central differences with the lumped mass, automatic stable step
+  };
+  Integrator integrator = Integrator::ImplicitEuler;
+  double end_time = 1;           ///< simulated time (> 0)
+  double output_interval = 0.1;  ///< VTU/PVD output every this much simulated time (> 0)
+  double time_step = 0;          ///< first step of the implicit integrators; 0: output_interval / 10
+  double max_time_step = 0;      ///< upper bound of adaptive steps; 0: output_interval
+  double min_time_step = 0;      ///< a step cut below this fails the run; 0: 1e-6 x time_step
+  double growth = 1.5;           ///< step growth after an easy step (implicit)
+  int easy_iterations = 4;       ///< Newton iterations at or below which a step counts as easy
+  double explicit_safety = 0.5;  ///< explicit step = this fraction of the critical step (0, 1]
+  int explicit_rebuild_every = 20;  ///< explicit: contact BVH rebuilt every this many steps
+};
+
+}  // namespace sinew::solver

@@ -1,0 +1,162 @@
+/// @file test_dynamics_examples.cpp
+/// Time integration (issue 4) through the product's own scene runs: the sagging bars of the
+/// paper's Fig. 13 against the static solve of the same scene, and the energy behaviour of the
+/// integrators (implicit Euler dissipates, explicit central differences conserve, viscosity
+/// makes the total energy decrease monotonically).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "examples/example_support.hpp"
+
+namespace sinew::examples_test {
+namespace {
+
+/// The sagging-bars scene reduced to its stiff bar, without damping, for `end_time`.
+scene::SceneConfig single_bar(solver::DynamicOptions::Integrator integrator, double end_time) {
+  scene::SceneConfig config = scene::load_scene_file(example_path("sagging-bars").string());
+  config.bodies.resize(1);
+  config.boundary_conditions.resize(1);
+  // One element through the thickness: the explicit runs take thousands of steps.
+  config.bodies[0].mesh.generate.element_size = 0.05;
+  config.dynamics.options.integrator = integrator;
+  config.dynamics.options.end_time = end_time;
+  config.dynamics.options.output_interval = end_time / 5;
+  config.dynamics.options.time_step = 0.002;
+  config.dynamics.options.max_time_step = 0.002;
+  config.dynamics.mass_damping = 0;
+  config.output.vtu = false;
+  return config;
+}
+
+struct EnergySeries {
+  std::vector<double> time, kinetic, total;
+  double scale = 0;  ///< largest |term| seen (energy unit)
+};
+
+EnergySeries energies(const ExampleRun& run) {
+  const auto steps = read_csv(run.output / "steps.csv");
+  EnergySeries e;
+  for (std::size_t i = 0; i < steps.rows.size(); ++i) {
+    e.time.push_back(steps.at(i, "time"));
+    e.kinetic.push_back(steps.at(i, "kinetic_energy"));
+    e.total.push_back(steps.at(i, "total_energy"));
+    for (const char* c : {"kinetic_energy", "elastic_energy", "gravitational_energy"})
+      e.scale = std::max(e.scale, std::abs(steps.at(i, c)));
+  }
+  return e;
+}
+
+/// Largest rise of the total energy from one step to the next, relative to the energy scale.
+double largest_rise(const EnergySeries& e) {
+  double rise = 0;
+  for (std::size_t i = 1; i < e.total.size(); ++i) rise = std::max(rise, e.total[i] - e.total[i - 1]);
+  return rise / e.scale;
+}
+
+TEST(DynamicsExamples, SaggingBarsSettleOnTheStaticSolution) {
+  ScratchDirectory directory;
+  const ExampleRun run = run_example("sagging-bars", directory);
+  ASSERT_TRUE(run.report.success) << run.report.message;
+  const auto& result = run.report.dynamic_result;
+  EXPECT_EQ(result.cuts, 0);
+  EXPECT_NEAR(result.time, 8.0, 1e-12);
+
+  // One VTU per 0.1 s of simulated time, with the velocity, listed at exact output times.
+  const auto pvd = read_pvd(run.output / "sinew.pvd");
+  ASSERT_EQ(pvd.size(), 81u);
+  for (std::size_t k = 0; k < pvd.size(); ++k) EXPECT_NEAR(pvd[k].time, 0.1 * static_cast<double>(k), 1e-12);
+  EXPECT_NE(read_text(run.output / pvd.back().file).find("Name=\"velocity\""), std::string::npos);
+
+  // With viscosity the total energy decreases monotonically; the bars come to rest.
+  const EnergySeries e = energies(run);
+  const double peak_kinetic = *std::max_element(e.kinetic.begin(), e.kinetic.end());
+  std::printf("[ example  ] sagging-bars: %d steps, %d Newton iterations, peak kinetic %.4g J, final %.3g J, "
+              "total energy %.6g -> %.6g J, largest rise %.2g\n",
+              result.steps, result.newton_iterations, peak_kinetic, e.kinetic.back(), e.total.front(), e.total.back(),
+              largest_rise(e));
+  EXPECT_GT(peak_kinetic, 0.1 * e.scale) << "the bars must swing";
+  EXPECT_LT(largest_rise(e), 1e-9);
+  EXPECT_LT(e.kinetic.back(), 1e-8 * peak_kinetic);
+
+  // The same scene solved statically (gravity ramped over load increments).
+  scene::SceneConfig static_config = run.config;
+  static_config.dynamics.enabled = false;
+  static_config.solver.stepping.increments = 4;
+  const ExampleRun statics = run_config(static_config, directory, "static", "static");
+  ASSERT_TRUE(statics.report.success) << statics.report.message;
+  const VtuState settled = read_vtu_state(run.output / pvd.back().file);
+  const VtuState equilibrium = read_vtu_state(statics.output / read_pvd(statics.output / "sinew.pvd").back().file);
+  ASSERT_EQ(settled.u.rows(), equilibrium.u.rows());
+  const double largest = equilibrium.u.rowwise().norm().maxCoeff();
+  const double difference = (settled.u - equilibrium.u).rowwise().norm().maxCoeff();
+  // Tip sag of each bar (the free end, x = 0.5 m).
+  const Eigen::MatrixXd X = equilibrium.rest();
+  double tip[3] = {0, 0, 0};
+  for (Eigen::Index v = 0; v < X.rows(); ++v)
+    if (std::abs(X(v, 0) - 0.5) < 1e-9) {
+      const int bar = static_cast<int>(std::lround(X(v, 1) / 0.15 - 0.1));
+      tip[bar] = std::min(tip[bar], settled.u(v, 2));
+    }
+  std::printf("[ example  ] sagging-bars: settled vs static max |du| = %.3g m of %.4f m; tip sag stiff %.5f, "
+              "medium %.5f, soft %.5f m\n",
+              difference, largest, tip[0], tip[1], tip[2]);
+  EXPECT_LT(difference, 1e-4 * largest);
+  EXPECT_LT(tip[0], 0);
+  EXPECT_LT(tip[1], tip[0]) << "softer bars sag more";
+  EXPECT_LT(tip[2], tip[1]) << "softer bars sag more";
+}
+
+TEST(DynamicsExamples, ImplicitEulerWithoutViscosityDissipatesMonotonically) {
+  ScratchDirectory directory;
+  const ExampleRun run =
+      run_config(single_bar(solver::DynamicOptions::Integrator::ImplicitEuler, 0.3), directory, "implicit", "implicit");
+  ASSERT_TRUE(run.report.success) << run.report.message;
+  const EnergySeries e = energies(run);
+  std::printf("[ example  ] implicit Euler, no viscosity: total energy %.6g -> %.6g J (scale %.4g), largest rise %.2g\n",
+              e.total.front(), e.total.back(), e.scale, largest_rise(e));
+  EXPECT_LT(largest_rise(e), 1e-9);
+  EXPECT_LT(e.total.back(), e.total.front() - 1e-3 * e.scale) << "implicit Euler dissipates";
+}
+
+TEST(DynamicsExamples, ExplicitCentralDifferencesConserveEnergyWithoutViscosity) {
+  ScratchDirectory directory;
+  const ExampleRun run =
+      run_config(single_bar(solver::DynamicOptions::Integrator::Explicit, 0.3), directory, "explicit", "explicit");
+  ASSERT_TRUE(run.report.success) << run.report.message;
+  const EnergySeries e = energies(run);
+  double drift = 0;
+  for (const double E : e.total) drift = std::max(drift, std::abs(E - e.total.front()));
+  const double peak_kinetic = *std::max_element(e.kinetic.begin(), e.kinetic.end());
+  std::printf("[ example  ] explicit, no viscosity: %d steps of %.3g s, peak kinetic %.4g J, largest energy drift "
+              "%.3g J (%.2g of the scale %.4g J)\n",
+              run.report.dynamic_result.steps, run.report.dynamic_result.max_step, peak_kinetic, drift,
+              drift / e.scale, e.scale);
+  EXPECT_GT(peak_kinetic, 0.1 * e.scale);
+  EXPECT_LT(drift, 1e-3 * e.scale);
+  EXPECT_GT(run.report.dynamic_result.steps, 1000) << "explicit needs many small steps";
+}
+
+TEST(DynamicsExamples, ViscosityMakesTheTotalEnergyDecreaseForEveryIntegrator) {
+  ScratchDirectory directory;
+  for (const auto integrator : {solver::DynamicOptions::Integrator::ImplicitEuler,
+                                solver::DynamicOptions::Integrator::Explicit}) {
+    scene::SceneConfig config = single_bar(integrator, 0.2);
+    config.dynamics.mass_damping = 5.0;
+    config.dynamics.stiffness_damping = 1e-4;
+    const bool is_explicit = integrator == solver::DynamicOptions::Integrator::Explicit;
+    const ExampleRun run = run_config(config, directory, is_explicit ? "explicit" : "implicit", is_explicit ? "explicit" : "implicit");
+    ASSERT_TRUE(run.report.success) << run.report.message;
+    const EnergySeries e = energies(run);
+    std::printf("[ example  ] %s with viscosity: total energy %.6g -> %.6g J, largest rise %.2g\n",
+                is_explicit ? "explicit" : "implicit Euler", e.total.front(), e.total.back(), largest_rise(e));
+    EXPECT_LT(largest_rise(e), is_explicit ? 1e-6 : 1e-9);
+    EXPECT_LT(e.total.back(), e.total.front());
+  }
+}
+
+}  // namespace
+}  // namespace sinew::examples_test
