@@ -4,6 +4,7 @@
 #include <gmsh.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "mesh/mesh_fixtures.hpp"
@@ -131,6 +132,76 @@ TEST_P(ReadMshFormat, RegionsFaceSetsAndNodeSets) {
   EXPECT_LE(mesh.rest.maxCoeff(), 2.0);
 }
 
+/// f(x, y, z) = 1 + x + 2y + 3z, the "depth" field of the node data tests.
+double linear_field(double x, double y, double z) { return 1 + x + 2 * y + 3 * z; }
+
+/// Appends node data views to the .msh file at `path` (written by write_two_cube_model):
+/// "depth" = linear_field at every node of the file (unused ones included), "velocity" (3
+/// components), "left_only" (the nodes with x <= 1), and an element data view "cell".
+void append_node_data(const std::string& path, const MshFormat& format) {
+  GmshSession session;
+  session.run("appending node data to " + path, [&] {
+    gmsh::open(path);
+    std::string model;
+    gmsh::model::getCurrent(model);
+    std::vector<std::size_t> tags;
+    std::vector<double> coordinates;
+    std::vector<double> unused_parametric;
+    gmsh::model::mesh::getNodes(tags, coordinates, unused_parametric);
+    std::vector<double> depth;
+    std::vector<double> velocity;
+    std::vector<std::size_t> left_tags;
+    std::vector<double> left;
+    for (std::size_t i = 0; i < tags.size(); ++i) {
+      const double x = coordinates[3 * i], y = coordinates[3 * i + 1], z = coordinates[3 * i + 2];
+      depth.push_back(linear_field(x, y, z));
+      velocity.insert(velocity.end(), {x, y, z});
+      if (x <= 1) {
+        left_tags.push_back(tags[i]);
+        left.push_back(x);
+      }
+    }
+    std::vector<std::size_t> tet_tags;
+    std::vector<std::size_t> tet_nodes;
+    gmsh::model::mesh::getElementsByType(4, tet_tags, tet_nodes);
+    gmsh::option::setNumber("Mesh.MshFileVersion", format.version);
+    gmsh::option::setNumber("Mesh.Binary", format.binary ? 1 : 0);
+    gmsh::option::setNumber("PostProcessing.SaveMesh", 0);  // the file has it already
+    const auto add_view = [&](const std::string& name, const std::string& type,
+                              const std::vector<std::size_t>& view_tags, const std::vector<double>& data,
+                              int components) {
+      const int view = gmsh::view::add(name);
+      gmsh::view::addHomogeneousModelData(view, 0, model, type, view_tags, data, 0.0, components);
+      gmsh::view::write(view, path, /*append=*/true);
+    };
+    add_view("depth", "NodeData", tags, depth, 1);
+    add_view("velocity", "NodeData", tags, velocity, 3);
+    add_view("left_only", "NodeData", left_tags, left, 1);
+    add_view("cell", "ElementData", tet_tags, std::vector<double>(tet_tags.size(), 1.0), 1);
+  });
+}
+
+TEST_P(ReadMshFormat, ScalarNodeDataBecomeNodeFields) {
+  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const std::string path = directory.file(GetParam().name + "_fields.msh");
+  write_two_cube_model(path, GetParam());
+  append_node_data(path, GetParam());
+
+  const TetMesh mesh = read_msh(path);
+  ASSERT_EQ(mesh.node_fields.size(), 1u);
+  ASSERT_TRUE(mesh.node_fields.count("depth"));
+  const VectorX& depth = mesh.node_fields.at("depth");
+  ASSERT_EQ(depth.size(), mesh.num_nodes());
+  for (Index v = 0; v < mesh.num_nodes(); ++v) {
+    EXPECT_NEAR(depth[v], linear_field(mesh.rest(v, 0), mesh.rest(v, 1), mesh.rest(v, 2)), 1e-12)
+        << "node " << v;
+  }
+  EXPECT_THAT(mesh.skipped_node_fields.at("velocity"), HasSubstr("3 components per node, not 1"));
+  EXPECT_THAT(mesh.skipped_node_fields.at("left_only"), HasSubstr("no value at"));
+  EXPECT_THAT(mesh.skipped_node_fields.at("cell"), HasSubstr("ElementData, not node data"));
+  EXPECT_EQ(mesh.skipped_node_fields.size(), 3u);
+}
+
 INSTANTIATE_TEST_SUITE_P(Formats, ReadMshFormat,
                          ::testing::Values(MshFormat{"v22_ascii", 2.2, false},
                                            MshFormat{"v41_ascii", 4.1, false},
@@ -173,6 +244,54 @@ TEST(ReadMsh, HandWrittenV22WithSparseTagsInvertedTetAndUnusedNode) {
   EXPECT_EQ(mesh.rest.row(4), (Eigen::RowVector3d(1, 1, 1)));
   for (Index t = 0; t < 2; ++t) EXPECT_GT(signed_volume(mesh.rest, mesh.tets, t), 0);
   EXPECT_NEAR(testing::total_volume(mesh.rest, mesh.tets), 1.0 / 6 + 1.0 / 3, 1e-12);
+}
+
+TEST(ReadMsh, NodeDataFollowTheNodeTagsAndTheFirstTimeStep) {
+  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const std::string path = directory.file("fields.msh");
+  // Sparse tags listed out of order; node 99 is used by no tet. "depth" = 1 + x + 2y + 3z is
+  // given in tag order 99, 50, ..., 10 at time step 3 (steps 0-2 are empty) and again, with
+  // other values, at step 5; "gappy" misses node 30; "with_nan" holds a NaN (kept: what a
+  // field may hold is its user's business).
+  write_text(path,
+             "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+             "$Nodes\n6\n"
+             "40 0 0 1\n10 0 0 0\n30 0 1 0\n20 1 0 0\n99 7 7 7\n50 1 1 1\n"
+             "$EndNodes\n"
+             "$Elements\n2\n"
+             "1 4 2 0 1 10 20 30 40\n"
+             "2 4 2 0 1 20 30 40 50\n"
+             "$EndElements\n"
+             "$NodeData\n1\n\"depth\"\n1\n0.5\n3\n3\n1\n6\n"
+             "99 43\n50 7\n40 4\n30 3\n20 2\n10 1\n$EndNodeData\n"
+             "$NodeData\n1\n\"depth\"\n1\n1.0\n3\n5\n1\n5\n"
+             "50 -1\n40 -1\n30 -1\n20 -1\n10 -1\n$EndNodeData\n"
+             "$NodeData\n1\n\"gappy\"\n1\n0\n3\n0\n1\n4\n"
+             "10 0\n20 0\n40 0\n50 0\n$EndNodeData\n"
+             "$NodeData\n1\n\"with_nan\"\n1\n0\n3\n0\n1\n5\n"
+             "10 0\n20 nan\n30 0\n40 0\n50 0\n$EndNodeData\n");
+  const TetMesh mesh = read_msh(path);
+  ASSERT_EQ(mesh.num_nodes(), 5);
+  const VectorX& depth = mesh.node_fields.at("depth");
+  for (Index v = 0; v < mesh.num_nodes(); ++v) {
+    EXPECT_EQ(depth[v], linear_field(mesh.rest(v, 0), mesh.rest(v, 1), mesh.rest(v, 2))) << "node " << v;
+  }
+  EXPECT_TRUE(std::isnan(mesh.node_fields.at("with_nan")[1]));  // tag 20
+  EXPECT_EQ(mesh.node_fields.size(), 2u);
+  EXPECT_EQ(mesh.skipped_node_fields.at("gappy"),
+            "no value at 1 of the mesh's 5 nodes, e.g. node 2 (Gmsh node tag 30) at (0, 1, 0)");
+}
+
+TEST(ReadMsh, WithoutNodeDataThereAreNoNodeFields) {
+  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const std::string path = directory.file("plain.msh");
+  write_text(path,
+             "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+             "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n"
+             "$Elements\n1\n1 4 2 0 1 1 2 3 4\n$EndElements\n");
+  const TetMesh mesh = read_msh(path);
+  EXPECT_TRUE(mesh.node_fields.empty());
+  EXPECT_TRUE(mesh.skipped_node_fields.empty());
 }
 
 TEST(ReadMsh, TetsOutsideEveryGroupFormTheDefaultRegion) {

@@ -1,6 +1,6 @@
 /// @file test_build_contact.cpp
 /// The scene's "contact" section and per-body depth options -> contact::ContactGeometry:
-/// depths from chosen surfaces or a file, penalties (automatic, global, per pair), and the
+/// depths from chosen surfaces, a file or a node field of the mesh file, penalties (automatic, global, per pair), and the
 /// errors a user gets for a bad set-up.
 
 #include <gmock/gmock.h>
@@ -9,7 +9,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
+#include "mesh/mesh_fixtures.hpp"
 #include "scene/scene_test_support.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/scene/build_contact.hpp"
@@ -135,6 +137,107 @@ TEST(BuildContact, DepthFromAFile) {
   }
   EXPECT_THAT(build_contact_error(scene), HasSubstr("must be finite"));
   std::filesystem::remove(path);
+}
+
+/// A Gmsh 2.2 ASCII file of the box [0,1]^2 x [0,0.5] (structured, 18 nodes), node tags
+/// 1000 - 7v so that the reader renumbers the nodes in reverse, with $NodeData blocks:
+/// "depth" = z, "temperature" = x - 1 (negative at x < 1), "nan_depth" = z but NaN at
+/// (1, 1, 0.5), "partial" = z without a value at (0, 0, 0).
+void write_box_with_fields(const std::string& path) {
+  const mesh::TetMesh box = mesh::testing::structured_box(2, 2, 1, 0.5);
+  const auto tag = [](Index v) { return 1000 - 7 * v; };
+  std::ofstream out(path);
+  out.precision(17);
+  out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << box.num_nodes() << "\n";
+  for (Index v = 0; v < box.num_nodes(); ++v)
+    out << tag(v) << " " << box.rest(v, 0) << " " << box.rest(v, 1) << " " << box.rest(v, 2) << "\n";
+  out << "$EndNodes\n$Elements\n" << box.num_tets() << "\n";
+  for (Index t = 0; t < box.num_tets(); ++t) {
+    out << t + 1 << " 4 2 0 1";
+    for (int k = 0; k < 4; ++k) out << " " << tag(box.tets(t, k));
+    out << "\n";
+  }
+  out << "$EndElements\n";
+  const auto field = [&](const std::string& name, const auto& value) {
+    std::ostringstream rows;
+    rows.precision(17);
+    Index count = 0;
+    for (Index v = 0; v < box.num_nodes(); ++v) {
+      const std::string text = value(Vector3(box.rest.row(v).transpose()));
+      if (text.empty()) continue;
+      rows << tag(v) << " " << text << "\n";
+      ++count;
+    }
+    out << "$NodeData\n1\n\"" << name << "\"\n1\n0\n3\n0\n1\n" << count << "\n" << rows.str() << "$EndNodeData\n";
+  };
+  const auto number = [](double x) {
+    std::ostringstream text;
+    text.precision(17);
+    text << x;
+    return text.str();
+  };
+  field("depth", [&](const Vector3& X) { return number(X.z()); });
+  field("temperature", [&](const Vector3& X) { return number(X.x() - 1); });
+  field("nan_depth", [&](const Vector3& X) { return X == Vector3(1, 1, 0.5) ? std::string("nan") : number(X.z()); });
+  field("partial", [&](const Vector3& X) { return X.isZero() ? std::string() : number(X.z()); });
+}
+
+/// contact_scene() with the box read from `msh_path`, as the second body, lifted by 0.25.
+json file_box_scene(const std::string& msh_path, const std::string& depth_field) {
+  json scene = contact_scene();
+  json box = scene["bodies"][0];
+  box["mesh"] = {{"file", msh_path}};
+  box["transform"] = {{"translate", {0, 0, 0.25}}};
+  box["regions"] = {{"*", {{"material", "gel"}}}};
+  box["contact"] = {{"depth_field", depth_field}};
+  scene["bodies"] = json::array({scene["bodies"][1], box});
+  return scene;
+}
+
+TEST(BuildContact, DepthFromANodeFieldOfTheMeshFile) {
+  const mesh::testing::TemporaryDirectory directory("sinew-depth-field");
+  const std::string path = directory.file("box.msh");
+  write_box_with_fields(path);
+  const json scene = file_box_scene(path, "depth");
+  const SceneConfig config = parse_scene(scene, "");
+  const fem::Problem problem = build_problem(config);
+  const ContactSetup setup = build_contact(config, problem);
+  const auto& box = problem.bodies[1];
+  ASSERT_EQ(box.num_nodes, 18);
+  for (Index v = box.first_node; v < box.first_node + box.num_nodes; ++v)
+    EXPECT_NEAR(setup.geometry.depth[v], problem.mesh.rest(v, 2) - 0.25, 1e-15) << "node " << v;
+  // The plate keeps its distance to its own boundary; the box's fields do not reach it.
+  const auto& plate = problem.bodies[0];
+  EXPECT_EQ(setup.geometry.depth.segment(plate.first_node, plate.num_nodes).minCoeff(), 0.0);
+  ASSERT_EQ(problem.mesh.node_fields.count("box/depth"), 1u);
+  EXPECT_TRUE(problem.mesh.node_fields.at("box/depth").segment(plate.first_node, plate.num_nodes).array().isNaN().all());
+}
+
+TEST(BuildContact, DepthFieldErrorsNameThePathAndTheField) {
+  const mesh::testing::TemporaryDirectory directory("sinew-depth-field");
+  const std::string path = directory.file("box.msh");
+  write_box_with_fields(path);
+  EXPECT_THAT(build_contact_error(file_box_scene(path, "dpeth")),
+              HasSubstr("bodies[1].contact.depth_field: the mesh file has no node field \"dpeth\" (fields: depth, "
+                        "nan_depth, temperature, partial (unusable: no value at 1 of the mesh's 18 nodes"));
+  EXPECT_THAT(build_contact_error(file_box_scene(path, "partial")),
+              HasSubstr("bodies[1].contact.depth_field: the mesh file's node field \"partial\" cannot be used: no "
+                        "value at 1 of the mesh's 18 nodes, e.g. node 17 (Gmsh node tag 1000) at (0, 0, 0)"));
+  EXPECT_THAT(build_contact_error(file_box_scene(path, "nan_depth")),
+              HasSubstr("bodies[1].contact.depth_field: node field \"nan_depth\" has value nan at node 0 (rest "
+                        "position (1, 1, 0.75)); depths must be finite and >= 0"));
+  const std::string negative = build_contact_error(file_box_scene(path, "temperature"));
+  EXPECT_THAT(negative, HasSubstr("bodies[1].contact.depth_field: node field \"temperature\" has value -"));
+  EXPECT_THAT(negative, HasSubstr(", and 11 more nodes with a negative or non-finite value; depths must be finite and >= 0"));
+
+  // Checked at load: a generated mesh has no fields; one depth source only.
+  json scene = contact_scene();
+  scene["bodies"][0]["contact"] = {{"depth_field", "depth"}};
+  EXPECT_THAT(testing::parse_error(scene, ""),
+              HasSubstr("bodies[0].contact.depth_field: needs a mesh file (\"mesh\": {\"file\": ...})"));
+  scene = file_box_scene(path, "depth");
+  scene["bodies"][1]["contact"]["depth_region"] = "default";
+  EXPECT_THAT(testing::parse_error(scene, ""), HasSubstr("bodies[1].contact: give at most one of"));
 }
 
 TEST(BuildContact, BadSetUpsAreReportedWithTheirPath) {

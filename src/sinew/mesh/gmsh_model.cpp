@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
+#include <map>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -61,6 +64,80 @@ Triangles append_rows(const Triangles& top, const Triangles& bottom) {
   Triangles stacked(top.rows() + bottom.rows(), 3);
   stacked << top, bottom;
   return stacked;
+}
+
+std::string view_option(int view_tag, const std::string& option) {
+  return "View[" + std::to_string(gmsh::view::getIndex(view_tag)) + "]." + option;
+}
+
+std::string show_point(const Positions& rest, Index node) {
+  std::ostringstream out;
+  out << "(" << rest(node, 0) << ", " << rest(node, 1) << ", " << rest(node, 2) << ")";
+  return out.str();
+}
+
+/// The post-processing views of the current Gmsh state (a .msh file's $NodeData blocks) ->
+/// mesh.node_fields and mesh.skipped_node_fields (see TetMesh). `node_tags[v]` is the Gmsh tag of
+/// mesh node v.
+void read_node_fields(TetMesh& mesh, const std::vector<std::size_t>& node_tags) {
+  std::vector<int> view_tags;
+  gmsh::view::getTags(view_tags);
+  if (view_tags.empty()) return;
+  const NodeTagMap node_of_tag(node_tags);
+  std::map<std::string, int> views_named;
+  for (const int view : view_tags) {
+    std::string name;
+    gmsh::option::getString(view_option(view, "Name"), name);
+    if (++views_named[name] > 1) {
+      mesh.node_fields.erase(name);
+      mesh.skipped_node_fields[name] =
+          "the file has " + std::to_string(views_named[name]) + " data views of this name";
+      continue;
+    }
+    double num_steps = 0;
+    gmsh::option::getNumber(view_option(view, "NbTimeStep"), num_steps);
+    std::string data_type;
+    std::vector<std::size_t> tags;
+    std::vector<double> data;
+    int num_components = 0;
+    for (int step = 0; step < static_cast<int>(num_steps) && tags.empty(); ++step) {
+      double time = 0;
+      gmsh::view::getHomogeneousModelData(view, step, data_type, tags, data, time, num_components);
+      if (data_type != "NodeData") break;
+    }
+    if (data_type != "NodeData") {
+      mesh.skipped_node_fields[name] = (data_type.empty() ? std::string("not model data") : data_type) +
+                                       ", not node data";
+      continue;
+    }
+    if (tags.empty()) {
+      mesh.skipped_node_fields[name] = "no values";
+      continue;
+    }
+    if (num_components != 1 || data.size() != tags.size()) {
+      mesh.skipped_node_fields[name] =
+          std::to_string(num_components) + " components per node, not 1";
+      continue;
+    }
+    VectorX values = VectorX::Constant(mesh.num_nodes(), std::numeric_limits<double>::quiet_NaN());
+    std::vector<char> given(static_cast<std::size_t>(mesh.num_nodes()), 0);
+    for (std::size_t i = 0; i < tags.size(); ++i) {
+      const Index node = node_of_tag.position(tags[i]);
+      if (node < 0) continue;  // a node no tet uses
+      values[node] = data[i];
+      given[static_cast<std::size_t>(node)] = 1;
+    }
+    const auto missing = std::count(given.begin(), given.end(), 0);
+    if (missing > 0) {
+      const auto first = static_cast<Index>(std::find(given.begin(), given.end(), 0) - given.begin());
+      mesh.skipped_node_fields[name] =
+          "no value at " + std::to_string(missing) + " of the mesh's " + std::to_string(mesh.num_nodes()) +
+          " nodes, e.g. node " + std::to_string(first) + " (Gmsh node tag " +
+          std::to_string(node_tags[static_cast<std::size_t>(first)]) + ") at " + show_point(mesh.rest, first);
+      continue;
+    }
+    mesh.node_fields[name] = std::move(values);
+  }
 }
 
 }  // namespace
@@ -265,6 +342,10 @@ TetMesh tet_mesh_from_gmsh_model() {
       existing->second = append_rows(existing->second, triangles);
     }
   }
+
+  std::vector<std::size_t> kept_tags(kept_positions.size());
+  for (std::size_t v = 0; v < kept_positions.size(); ++v) kept_tags[v] = node_tags[kept_positions[v]];
+  read_node_fields(mesh, kept_tags);
   return mesh;
 }
 

@@ -19,7 +19,10 @@ namespace sinew::mesh {
 /// - node sets: nodes of dimension-0, 1 and 2 physical groups;
 /// - nodes not used by any tet are dropped (with the set entries that refer to them) and the
 ///   rest renumbered in ascending Gmsh node tag order;
-/// - tets are oriented positively.
+/// - tets are oriented positively;
+/// - node fields: every post-processing view (a .msh file's `$NodeData` blocks become views)
+///   that holds one value per node for every kept node, in its first time step with data, by
+///   view name; the other views go to skipped_node_fields with the reason.
 /// Returns a mesh without tets when the model has none; does not call validate().
 /// Throws InputError when a tet is inverted relative to a neighbour (see reject_folded_tets);
 /// tets merely wound the other way are flipped to positive orientation.

@@ -20,6 +20,14 @@ struct TetMesh {
   std::map<std::string, std::vector<Index>> node_sets;
   /// Named face sets: #F x 3 triangles (node indices), from Gmsh dimension-2 physical groups.
   std::map<std::string, Triangles> face_sets;
+  /// Scalar fields per node from the mesh file, #V each, by view name: every Gmsh `$NodeData`
+  /// view with one component and a value at every node (its first time step that holds data).
+  /// Empty for generated meshes.
+  std::map<std::string, VectorX> node_fields;
+  /// The file's other `$NodeData` views, by view name -> why they are not in node_fields
+  /// (e.g. "3 components per node, not 1", "no value at 2 of the mesh's 8 nodes, e.g. ..."), so that
+  /// asking for one by name can say what is wrong with it.
+  std::map<std::string, std::string> skipped_node_fields;
 
   Index num_nodes() const { return static_cast<Index>(rest.rows()); }
   Index num_tets() const { return static_cast<Index>(tets.rows()); }
@@ -57,7 +65,7 @@ std::vector<Index> referenced_nodes(const Tets& tets);
 
 /// Quality checks run on every mesh before use. Throws InputError with the first few
 /// offending element indices (1-based as Gmsh prints them and 0-based) when it finds:
-/// - an index out of range;
+/// - an index out of range, or a node field whose length is not #V;
 /// - an inverted tet (negative volume) or a zero-volume one (|V| <= rel_volume_tolerance *
 ///   mean |V|);
 /// - two tets with the same node set (duplicates);

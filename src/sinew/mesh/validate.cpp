@@ -129,6 +129,12 @@ void check_indices(const TetMesh& mesh, Problems& problems) {
                    std::to_string(num_nodes) + " nodes)");
     }
   }
+  for (const auto& [name, values] : mesh.node_fields) {
+    if (values.size() != num_nodes) {
+      problems.add("node field \"" + name + "\" has " + std::to_string(values.size()) +
+                   " values (the mesh has " + std::to_string(num_nodes) + " nodes)");
+    }
+  }
 }
 
 void check_volumes(const TetMesh& mesh, const ValidationOptions& options, Problems& problems) {

@@ -68,6 +68,10 @@ mesh::TetMesh body_mesh(const fem::Problem& problem, const fem::BodyRange& body)
   }
   for (const auto& [name, faces] : all.face_sets)
     if (name.rfind(prefix, 0) == 0) m.face_sets[local_name(name)] = faces.array() - body.first_node;
+  for (const auto& [name, values] : all.node_fields)
+    if (name.rfind(prefix, 0) == 0) m.node_fields[local_name(name)] = values.segment(body.first_node, body.num_nodes);
+  for (const auto& [name, reason] : all.skipped_node_fields)
+    if (name.rfind(prefix, 0) == 0) m.skipped_node_fields[local_name(name)] = reason;
   return m;
 }
 
@@ -81,6 +85,45 @@ double mean_edge_length(const Positions& x, const Triangles& triangles) {
   for (Index f = 0; f < triangles.rows(); ++f)
     for (int k = 0; k < 3; ++k) sum += (x.row(triangles(f, k)) - x.row(triangles(f, (k + 1) % 3))).norm();
   return triangles.rows() > 0 ? sum / (3.0 * static_cast<double>(triangles.rows())) : 0.0;
+}
+
+std::string joined_names(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text.empty() ? "none" : text;
+}
+
+/// Nodal depths from the node field `name` of a body's own mesh (local numbering). Throws
+/// InputError (without a path) when the field is absent or unusable, or a value is negative or
+/// not finite.
+VectorX depth_from_field(const mesh::TetMesh& local, const std::string& name) {
+  if (const auto skipped = local.skipped_node_fields.find(name); skipped != local.skipped_node_fields.end())
+    throw InputError(fmt::format("the mesh file's node field \"{}\" cannot be used: {}", name, skipped->second));
+  const auto field = local.node_fields.find(name);
+  if (field == local.node_fields.end()) {
+    std::vector<std::string> names;
+    for (const auto& entry : local.node_fields) names.push_back(entry.first);
+    for (const auto& [skipped_name, reason] : local.skipped_node_fields)
+      names.push_back(skipped_name + " (unusable: " + reason + ")");
+    throw InputError(
+        fmt::format("the mesh file has no node field \"{}\" (fields: {})", name, joined_names(names)));
+  }
+  const VectorX& values = field->second;
+  Index bad = 0, first = -1;
+  for (Index v = 0; v < values.size(); ++v) {
+    if (std::isfinite(values[v]) && values[v] >= 0) continue;
+    if (bad++ == 0) first = v;
+  }
+  if (bad > 0) {
+    const auto x = local.rest.row(first);
+    const std::string more =
+        bad > 1 ? fmt::format(", and {} more node{} with a negative or non-finite value", bad - 1, bad > 2 ? "s" : "")
+                : "";
+    throw InputError(fmt::format(
+        "node field \"{}\" has value {} at node {} (rest position ({:g}, {:g}, {:g})){}; depths must be finite and >= 0",
+        name, values[first], first, x(0), x(1), x(2), more));
+  }
+  return values;
 }
 
 }  // namespace
@@ -152,6 +195,14 @@ ContactSetup build_contact(const SceneConfig& scene, const fem::Problem& problem
         g.depth.segment(body.first_node, body.num_nodes) = read_depth_file(c.depth_file, body.num_nodes);
       } catch (const InputError& e) {
         errors.push_back(fmt::format("{}.depth_file: {}", path, e.what()));
+      }
+      continue;
+    }
+    if (!c.depth_field.empty()) {
+      try {
+        g.depth.segment(body.first_node, body.num_nodes) = depth_from_field(body_mesh(problem, body), c.depth_field);
+      } catch (const InputError& e) {
+        errors.push_back(fmt::format("{}.depth_field: {}", path, e.what()));
       }
       continue;
     }

@@ -1,8 +1,9 @@
 #pragma once
 /// @file build_contact.hpp
 /// SceneConfig + fem::Problem -> the contact module's plain input: every body's boundary
-/// triangles and tets, the nodal material depths (from each body's zero-depth surface, or a
-/// depth file), and the penalty of every pair of bodies (explicit, or the automatic default).
+/// triangles and tets, the nodal material depths (from each body's zero-depth surface, a depth
+/// file, or a node field of its mesh file), and the penalty of every pair of bodies (explicit,
+/// or the automatic default).
 
 #include <string>
 #include <vector>
@@ -23,7 +24,9 @@ struct ContactSetup {
 
 /// Requires scene.contact.enabled. Throws InputError, each message naming the config path, for:
 /// a depth face set or region the body does not have, a depth file that cannot be read, has
-/// the wrong count of numbers or a negative/non-finite value, and a pair of all-rigid bodies
+/// the wrong count of numbers or a negative/non-finite value, a depth field the mesh file does
+/// not have (the fields it has are listed) or cannot use (not scalar, not at every node), or with
+/// a negative/non-finite value (the first such node is named), and a pair of all-rigid bodies
 /// without an explicit penalty.
 ContactSetup build_contact(const SceneConfig& scene, const fem::Problem& problem);
 

@@ -4,6 +4,7 @@
 #include "sinew/scene/build_problem.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <set>
@@ -198,6 +199,21 @@ class ProblemBuilder {
     }
     for (const auto& [name, triangles] : local.face_sets) {
       global.face_sets[config.name + "/" + name] = (triangles.array() + range.first_node).matrix();
+    }
+    // Node fields span all nodes: earlier bodies' fields are NaN at this body's nodes and this
+    // body's fields NaN at theirs.
+    const Index num_nodes = range.first_node + range.num_nodes;
+    for (auto& [name, values] : global.node_fields) {
+      values.conservativeResize(num_nodes);
+      values.tail(range.num_nodes).setConstant(std::numeric_limits<double>::quiet_NaN());
+    }
+    for (const auto& [name, values] : local.node_fields) {
+      VectorX& spread = global.node_fields[config.name + "/" + name];
+      spread = VectorX::Constant(num_nodes, std::numeric_limits<double>::quiet_NaN());
+      spread.tail(range.num_nodes) = values;
+    }
+    for (const auto& [name, reason] : local.skipped_node_fields) {
+      global.skipped_node_fields[config.name + "/" + name] = reason;
     }
 
     std::vector<std::vector<Index>> tets_of_region(local.region_names.size());

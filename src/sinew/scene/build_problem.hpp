@@ -11,7 +11,8 @@
 namespace sinew::scene {
 
 /// Builds the discretized problem. Bodies are concatenated in scene order (fem::BodyRange per
-/// body); region names become "<body>/<region>", node and face sets "<body>/<set>".
+/// body); region names become "<body>/<region>", node and face sets "<body>/<set>", node fields
+/// (and skipped ones) "<body>/<field>", each spanning all nodes with NaN at other bodies' nodes.
 /// Throws InputError listing every error, each starting with the path of the config entry
 /// (e.g. "boundary_conditions[1].nodes: selects no node ..."):
 /// - a selector that matches no node, or names a set or region the body does not have;

@@ -340,9 +340,11 @@ class SceneReader {
     const int depth_sources = static_cast<int>(contact.contains("depth_face_set")) +
                               static_cast<int>(contact.contains("depth_nodes")) +
                               static_cast<int>(contact.contains("depth_region")) +
-                              static_cast<int>(contact.contains("depth_file"));
+                              static_cast<int>(contact.contains("depth_file")) +
+                              static_cast<int>(contact.contains("depth_field"));
     if (depth_sources > 1)
-      error(contact_path, "give at most one of \"depth_face_set\", \"depth_region\", \"depth_nodes\" and \"depth_file\"");
+      error(contact_path, "give at most one of \"depth_face_set\", \"depth_region\", \"depth_nodes\", "
+                          "\"depth_file\" and \"depth_field\"");
     if (contact.contains("depth_face_set")) {
       body.contact.depth_surface = BodyContactConfig::DepthSurface::FaceSet;
       body.contact.depth_surface_name = contact.at("depth_face_set").get<std::string>();
@@ -353,6 +355,11 @@ class SceneReader {
       body.contact.depth_file = resolve(contact.at("depth_file").get<std::string>());
       if (!std::filesystem::exists(body.contact.depth_file))
         error(json_path_key(contact_path, "depth_file"), "depth file not found: " + body.contact.depth_file);
+    } else if (contact.contains("depth_field")) {
+      body.contact.depth_field = contact.at("depth_field").get<std::string>();
+      if (body.mesh.file.empty())
+        error(json_path_key(contact_path, "depth_field"),
+              "needs a mesh file (\"mesh\": {\"file\": ...}); a generated mesh has no node fields");
     }
     for (const auto& [name, region] : j.at("regions").items()) {
       body.regions[name] = read_region(region, json_path_key(json_path_key(path, "regions"), name), config);

@@ -57,6 +57,9 @@ struct BodyContactConfig {
   /// Nodes: boundary faces whose three nodes are all chosen by one of these selectors.
   std::vector<NodeSelector> depth_nodes;
   std::string depth_file;          ///< nodal depths (one per node of the body's mesh), overrides the above
+  /// Nodal depths from this node field of the body's mesh file (TetMesh::node_fields), overrides
+  /// the surface options above; at most one of depth_file and depth_field is set.
+  std::string depth_field;
 };
 
 struct BodyConfig {

@@ -396,6 +396,11 @@ SchemaNode body_schema() {
                             "nodal depths instead (text: one number per node of the body's mesh, in mesh order; "
                             "relative paths start at the scene file's directory)")
                          .non_empty(),
+                     string("depth_field",
+                            "nodal depths instead, from this node field of the body's mesh file (a Gmsh "
+                            "$NodeData view of this name: one scalar per node, its first time step; every "
+                            "node of the mesh needs a finite value >= 0)")
+                         .non_empty(),
                  })
               .fallback(json::object()),
       });
