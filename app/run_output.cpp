@@ -25,8 +25,9 @@ RunOutput::RunOutput(std::string directory, const fem::Problem& problem, const S
   for (const auto& name : reaction_names_)
     for (const char* c : {"fx", "fy", "fz", "mx", "my", "mz"}) columns.push_back(name + "." + c);
   if (model.contact) {
-    for (const char* c : {"contact_pairs", "contact_area", "max_penetration", "mean_penetration", "contact_energy"})
+    for (const char* c : {"contact_pairs", "contact_area", "max_penetration", "mean_penetration"})
       columns.emplace_back(c);
+    if (!model.mass) columns.emplace_back("contact_energy");  // dynamics logs it with the other energies
     const auto& names = model.contact_body_names;
     const auto& penalty = model.contact->geometry().penalty;
     for (Index a = 0; a < penalty.rows(); ++a)
@@ -108,7 +109,7 @@ void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State&
     row.emplace_back(c.area);
     row.emplace_back(c.max_penetration);
     row.emplace_back(c.mean_penetration);
-    row.emplace_back(c.energy);
+    if (!model_.mass) row.emplace_back(c.energy);
     const Index bodies = model_.contact->num_bodies();
     for (const auto& [a, b] : contact_columns_) {
       const Vector3& f = c.body_pair_force[static_cast<std::size_t>(a * bodies + b)];

@@ -23,8 +23,9 @@ RunReport run_dynamics(const scene::SceneConfig& scene, const StaticModel& model
   const solver::DynamicOptions& dyn = scene.dynamics.options;
   using Integrator = solver::DynamicOptions::Integrator;
   if (dyn.integrator == Integrator::Explicit)
-    logger().info("explicit central differences: critical time step {:.4g}, step {:.4g} ({} x), about {:.0f} steps",
-                  model.critical_time_step, dyn.explicit_safety * model.critical_time_step, dyn.explicit_safety,
+    logger().info("explicit central differences: critical time step {:.4g} (contact alone {:.4g}), step {:.4g} ({} x), "
+                  "about {:.0f} steps",
+                  model.critical_time_step, model.contact_critical_time_step, dyn.explicit_safety * model.critical_time_step, dyn.explicit_safety,
                   std::ceil(dyn.end_time / (dyn.explicit_safety * model.critical_time_step)));
   io::ProgressBar bar({.total = dyn.end_time, .label = scene.name});
   auto log_line = [&](auto level, const std::string& text) {

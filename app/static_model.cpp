@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "sinew/contact/contact_time_step.hpp"
 #include "sinew/fem/mass_matrix.hpp"
 #include "sinew/fem/stable_time_step.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
@@ -55,6 +56,17 @@ StaticModel make_static_model(const fem::Problem& problem, const solver::StaticS
       VectorX tet_density(mesh.num_tets());
       for (Index t = 0; t < mesh.num_tets(); ++t) tet_density[t] = problem.region_density[static_cast<std::size_t>(mesh.region[t])];
       model.critical_time_step = fem::critical_time_step(mesh.rest, mesh.tets, model.tet_material, tet_density).dt;
+      if (model.contact) {
+        // The penalty springs of contact are stiffer than the elements when h is small.
+        VectorX movable_mass = fem::lumped_masses(mesh.rest, mesh.tets, mesh.region, problem.region_density);
+        for (Index a = 0; a < mesh.num_nodes(); ++a) {
+          const auto kind = model.dofs->kind(a);
+          if (kind == fem::DofMap::NodeKind::Prescribed || kind == fem::DofMap::NodeKind::RigidMember) movable_mass[a] = 0;
+        }
+        model.contact_critical_time_step =
+            contact::contact_critical_time_step(model.contact->geometry(), mesh.rest, movable_mass).dt;
+        model.critical_time_step = std::min(model.critical_time_step, model.contact_critical_time_step);
+      }
     }
   }
   model.objective = std::make_unique<solver::Objective>(*model.dofs, std::move(terms), mesh.num_nodes());

@@ -29,7 +29,8 @@ struct StaticModel {
   std::unique_ptr<BlockSparseMatrix> mass;           ///< M (lumped or consistent), for kinetic energy
   std::unique_ptr<fem::QuadraticEnergy> inertia;     ///< implicit Euler and explicit
   std::unique_ptr<fem::QuadraticEnergy> viscosity;   ///< D = mass_damping M + stiffness_damping K0
-  double critical_time_step = 0;                     ///< explicit: 2 / omega_max of the lumped system
+  double critical_time_step = 0;                     ///< explicit: min of the elastic and contact bounds
+  double contact_critical_time_step = 0;             ///< explicit with contact: 2 / omega of the stiffest penalty spring
 };
 
 /// The contact term's input, when the scene has contact.

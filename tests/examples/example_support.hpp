@@ -166,13 +166,17 @@ inline std::string decode_base64(const std::string& text) {
   return out;
 }
 
-/// The Float64, 3-component DataArray named `name` of a binary .vtu (UInt64 header), #points x 3.
-inline Eigen::MatrixXd vtu_vector_array(const std::string& xml, const std::string& name) {
+/// The Float64 DataArray named `name` with `components` components of a binary .vtu (UInt64
+/// header), #entries x components.
+inline Eigen::MatrixXd vtu_array(const std::string& xml, const std::string& name, int components = 1) {
   const std::size_t tag_start = xml.find("<DataArray type=\"Float64\" Name=\"" + name + "\"");
   if (tag_start == std::string::npos) throw std::runtime_error("no Float64 DataArray " + name);
   const std::size_t tag_end = xml.find('>', tag_start);
   const std::string tag = xml.substr(tag_start, tag_end - tag_start + 1);
-  if (xml_attribute(tag, "NumberOfComponents") != "3") throw std::runtime_error(name + " is not a 3-vector array");
+  const std::string declared =
+      tag.find(" NumberOfComponents=") == std::string::npos ? "" : xml_attribute(tag, "NumberOfComponents");
+  if ((declared.empty() ? 1 : std::stoi(declared)) != components)
+    throw std::runtime_error(name + " does not have " + std::to_string(components) + " components");
   std::string text = xml.substr(tag_end + 1, xml.find("</DataArray>", tag_end) - tag_end - 1);
   text.erase(0, text.find_first_not_of(" \n\t"));
   text.erase(text.find_last_not_of(" \n\t") + 1);
@@ -180,17 +184,23 @@ inline Eigen::MatrixXd vtu_vector_array(const std::string& xml, const std::strin
   std::uint64_t count = 0;
   if (bytes.size() < 8) throw std::runtime_error(name + ": shorter than its header");
   std::memcpy(&count, bytes.data(), 8);
-  if (count != bytes.size() - 8 || count % 24 != 0) throw std::runtime_error(name + ": bad byte count");
-  const auto rows = static_cast<Eigen::Index>(count / 24);
-  Eigen::MatrixXd values(rows, 3);
+  const auto row_bytes = static_cast<std::uint64_t>(8 * components);
+  if (count != bytes.size() - 8 || count % row_bytes != 0) throw std::runtime_error(name + ": bad byte count");
+  const auto rows = static_cast<Eigen::Index>(count / row_bytes);
+  Eigen::MatrixXd values(rows, components);
   for (Eigen::Index r = 0; r < rows; ++r) {
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < components; ++c) {
       double v = 0;
-      std::memcpy(&v, bytes.data() + 8 + 8 * (3 * r + c), 8);
+      std::memcpy(&v, bytes.data() + 8 + 8 * (components * r + c), 8);
       values(r, c) = v;
     }
   }
   return values;
+}
+
+/// The Float64, 3-component DataArray named `name`, #points x 3.
+inline Eigen::MatrixXd vtu_vector_array(const std::string& xml, const std::string& name) {
+  return vtu_array(xml, name, 3);
 }
 
 /// Current positions and displacements of a .vtu written by a run; rest = x - u.

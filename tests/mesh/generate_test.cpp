@@ -168,6 +168,25 @@ TEST(GenerateMesh, CylinderAndSphereVolumesNearAnalytic) {
   EXPECT_EQ(testing::euler_characteristic(boundary_triangles(ball.tets)), 2);
 }
 
+TEST(GenerateMesh, FewerElementsPerTurnMeshAThinRodWithFarFewerTets) {
+  // A rod of radius 0.05 with element_size 0.05: 12 elements per turn refine the surface to about
+  // 0.026, 6 per turn to about 0.05 (element_size decides), 0 switches curvature refinement off.
+  const Shape rod = cylinder(Vector3(0, 0, 0), Vector3(1, 0, 0), 0.05);
+  GenerateOptions options;
+  options.element_size = 0.05;
+  const TetMesh fine = generate_mesh({Part{"rod", rod}}, options);
+  options.elements_per_turn = 6;
+  const TetMesh coarse = generate_mesh({Part{"rod", rod}}, options);
+  options.elements_per_turn = 0;
+  const TetMesh plain = generate_mesh({Part{"rod", rod}}, options);
+  EXPECT_LT(3 * coarse.num_tets(), fine.num_tets());
+  EXPECT_LE(plain.num_tets(), coarse.num_tets() * 3 / 2);
+  const double exact = kPi * 0.05 * 0.05;
+  EXPECT_NEAR(volume_of(coarse) / exact, 1.0, 0.2);  // a hexagon-like cross-section: about 17 % less
+  options.elements_per_turn = -1;
+  EXPECT_THROW(generate_mesh({Part{"rod", rod}}, options), InputError);
+}
+
 TEST(GenerateMesh, ThinHoleIsResolvedByCurvatureRefinement) {
   // A hole of radius 0.05 through a unit box meshed at size 0.25.
   const double radius = 0.05;

@@ -32,10 +32,8 @@ constexpr double kSeamRotationRadians = 0.7;
 /// Axis of the sphere's turn: generic, not in any coordinate plane.
 const Vector3 kSphereSeamRotationAxis = Vector3(1, 2, 3).normalized();
 
-/// Curved surfaces get at least this many elements per full turn (Mesh.MeshSizeFromCurvature),
-/// refining down to element_size * kMinSizeFactor, so a hole much thinner than element_size is
-/// still resolved.
-constexpr double kElementsPerTurn = 12;
+/// Curved surfaces are refined for GenerateOptions::elements_per_turn down to element_size *
+/// kMinSizeFactor, so a hole much thinner than element_size is still resolved.
 constexpr double kMinSizeFactor = 0.1;
 
 constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
@@ -373,6 +371,9 @@ void check_inputs(const std::vector<Part>& parts, const GenerateOptions& options
     throw InputError("generate_mesh: optimize_passes must be >= 0, got " +
                      std::to_string(options.optimize_passes));
   }
+  if (!std::isfinite(options.elements_per_turn) || options.elements_per_turn < 0) {
+    throw InputError("generate_mesh: elements_per_turn must be >= 0, got " + format_number(options.elements_per_turn));
+  }
   if (options.threads < 1) {
     throw InputError("generate_mesh: threads must be >= 1, got " + std::to_string(options.threads));
   }
@@ -431,7 +432,7 @@ void set_mesh_options(const GenerateOptions& options) {
   const double size = options.element_size;
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);
   gmsh::option::setNumber("Mesh.MeshSizeMin", size * kMinSizeFactor);
-  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", kElementsPerTurn);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", options.elements_per_turn);
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
   gmsh::option::setNumber("Mesh.Algorithm", 6);    // Frontal-Delaunay surfaces

@@ -65,6 +65,10 @@ struct Part {
 struct GenerateOptions {
   double element_size = 0.1;  ///< target tet edge length (scene length unit), > 0
   int optimize_passes = 1;    ///< Gmsh's tet optimization passes (Netgen-free)
+  /// Curved surfaces get at least this many elements per full turn (Gmsh's
+  /// Mesh.MeshSizeFromCurvature), down to element_size / 10; 0 = element_size alone decides
+  /// (thin rods: fewer elements around, far fewer tets).
+  double elements_per_turn = 12;
   int threads = 1;            ///< Gmsh meshing threads
 };
 

@@ -229,6 +229,7 @@ class SceneReader {
       const std::string generate_path = json_path_key(mesh_path, "generate");
       mesh.generate.element_size = generate.at("element_size").get<double>();
       mesh.generate.optimize_passes = generate.at("optimize_passes").get<int>();
+      mesh.generate.elements_per_turn = generate.at("elements_per_turn").get<double>();
       std::set<std::string> region_names;
       const json& parts = generate.at("parts");
       for (std::size_t i = 0; i < parts.size(); ++i) {

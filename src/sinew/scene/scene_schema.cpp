@@ -327,6 +327,12 @@ SchemaNode body_schema() {
                                     .min(0)
                                     .max(100)
                                     .fallback(generate_defaults.optimize_passes),
+                                number("elements_per_turn",
+                                       "curved surfaces get at least this many elements per full turn, down to "
+                                       "element_size / 10 (thin rods: lower it); 0 = element_size alone")
+                                    .min(0)
+                                    .max(1000)
+                                    .fallback(generate_defaults.elements_per_turn),
                                 array("parts",
                                       "named solids, each a region; fragmented into one conforming mesh (where they "
                                       "overlap, the first listed wins); each part's boundary is also the face set "

@@ -34,6 +34,7 @@ struct DynamicCallbacks {
   /// Every Newton iteration (implicit integrators); `step` describes the step being attempted.
   std::function<void(const TimeStepRecord& step, const IterationRecord& iteration)> on_iteration;
   /// The initial state (step 0) and every accepted step: positions and nodal velocities (#V x 3).
+  /// Explicit integration calls it about 50 times per output interval (and at output times).
   std::function<void(const TimeStepRecord& step, const fem::State& state, const NodalVectors& velocity)> on_step;
   /// At t = 0 and at every output time (multiples of output_interval, and end_time).
   std::function<void(int output, const TimeStepRecord& step, const fem::State& state, const NodalVectors& velocity)>
