@@ -68,10 +68,16 @@ int run_cli(int argc, char** argv) {
     if (*validate) {
       const auto config = scene::load_scene_file(validate_path);
       const fem::Problem problem = scene::build_problem(config);
-      const auto model = make_static_model(problem, config.solver);
-      std::cout << fmt::format("{}: valid ({} bodies, {} nodes, {} tets, {} unknowns)\n", validate_path,
+      // The same model a run builds: contact (depths, penalties) and dynamics (masses, time
+      // steps) are checked too.
+      const std::optional<ContactInput> contact = make_contact_input(config, problem);
+      const auto model = make_static_model(problem, config.solver, contact ? &*contact : nullptr, &config.dynamics);
+      std::string extras;
+      if (model.contact) extras += fmt::format(", contact between {} bodies", model.contact->num_bodies());
+      if (model.mass) extras += ", dynamics";
+      std::cout << fmt::format("{}: valid ({} bodies, {} nodes, {} tets, {} unknowns{})\n", validate_path,
                                config.bodies.size(), problem.mesh.num_nodes(), problem.mesh.num_tets(),
-                               model.dofs->num_dofs());
+                               model.dofs->num_dofs(), extras);
       return 0;
     }
     run_options.progress_bar = !no_progress;

@@ -46,43 +46,50 @@ RunOutput::RunOutput(std::string directory, const fem::Problem& problem, const S
   newton_ = std::make_unique<io::CsvTable>(
       directory_ + "/newton.csv",
       std::vector<std::string>{"step", "lambda", "iteration", "residual", "force_scale", "energy", "step_length",
-                               "line_search_halvings", "linear_iterations", "increment", "regularization"});
+                               "line_search_halvings", "linear_iterations", "increment", "regularization",
+                               "equilibrium_residual"});
   series_ = std::make_unique<io::PvdSeries>(directory_ + "/sinew.pvd");
 }
 
+std::optional<contact::ContactStatistics> RunOutput::contact_statistics(const fem::State& state) const {
+  if (!model_.contact) return std::nullopt;
+  return model_.contact->statistics(state.x);
+}
+
 void RunOutput::write_step(const solver::StepRecord& step, const fem::State& state) {
+  const auto contact = contact_statistics(state);
   write_row({static_cast<long long>(step.step), static_cast<long long>(step.increment), step.lambda, step.step_size,
              static_cast<long long>(step.newton_iterations), step.residual, step.force_scale, step.energy,
              static_cast<long long>(step.cuts)},
-            state);
+            state, contact ? &*contact : nullptr);
 }
 
-DynamicEnergies RunOutput::energies(const fem::State& state, const NodalVectors& velocity) const {
+DynamicEnergies RunOutput::energies(const fem::State& state, const NodalVectors& velocity,
+                                    const contact::ContactStatistics* contact) const {
   DynamicEnergies e;
   const VectorX v = velocity.reshaped<Eigen::RowMajor>();  // node-major x, y, z
   e.kinetic = 0.5 * v.dot(model_.mass->multiply(v));
   e.elastic = model_.elastic->value(state.x);
   e.gravitational = model_.external->value(state.x);
-  if (model_.contact) {
-    model_.contact->update(state.x);
-    e.contact = model_.contact->value(state.x);
-  }
+  if (contact) e.contact = contact->energy;
   return e;
 }
 
 void RunOutput::write_time_step(const solver::TimeStepRecord& step, const fem::State& state,
                                 const NodalVectors& velocity) {
-  const DynamicEnergies e = energies(state, velocity);
+  const auto contact = contact_statistics(state);
+  const DynamicEnergies e = energies(state, velocity, contact ? &*contact : nullptr);
   write_row({static_cast<long long>(step.step), step.time, step.step_size, static_cast<long long>(step.newton_iterations),
              step.residual, static_cast<long long>(step.cuts), e.kinetic, e.elastic, e.gravitational, e.contact,
              e.total()},
-            state, /*flush=*/false);
+            state, contact ? &*contact : nullptr, /*flush=*/false);
 }
 
 void RunOutput::write_time_iteration(const solver::TimeStepRecord& step, const solver::IterationRecord& it) {
   newton_->append({static_cast<long long>(step.step + 1), step.time, static_cast<long long>(it.iteration), it.residual,
                    it.force_scale, it.energy, it.step_length, static_cast<long long>(it.line_search_steps),
-                   static_cast<long long>(it.linear_iterations), it.increment, it.regularization});
+                   static_cast<long long>(it.linear_iterations), it.increment, it.regularization,
+                   it.equilibrium_residual});
 }
 
 void RunOutput::write_output(int output, double time, const fem::State& state, const NodalVectors& velocity) {
@@ -97,14 +104,15 @@ void RunOutput::write_output(int output, double time, const fem::State& state, c
   series_->add(time, name);
 }
 
-void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State& state, bool flush) {
+void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State& state,
+                          const contact::ContactStatistics* contact, bool flush) {
   const auto gradient = model_.objective->full_gradient(state);
   for (const auto& reaction : fem::compute_reactions(problem_, *model_.dofs, state, gradient)) {
     for (int k = 0; k < 3; ++k) row.emplace_back(reaction.force[k]);
     for (int k = 0; k < 3; ++k) row.emplace_back(reaction.moment[k]);
   }
-  if (model_.contact) {
-    const contact::ContactStatistics c = model_.contact->statistics(state.x);
+  if (contact) {
+    const contact::ContactStatistics& c = *contact;
     row.emplace_back(static_cast<long long>(c.pairs));
     row.emplace_back(c.area);
     row.emplace_back(c.max_penetration);
@@ -149,7 +157,8 @@ void RunOutput::write_dynamic_summary(const solver::DynamicResult& result, doubl
 void RunOutput::write_iteration(const solver::StepRecord& step, const solver::IterationRecord& it) {
   newton_->append({static_cast<long long>(step.step), step.lambda, static_cast<long long>(it.iteration), it.residual,
                    it.force_scale, it.energy, it.step_length, static_cast<long long>(it.line_search_steps),
-                   static_cast<long long>(it.linear_iterations), it.increment, it.regularization});
+                   static_cast<long long>(it.linear_iterations), it.increment, it.regularization,
+                   it.equilibrium_residual});
 }
 
 io::VtuData RunOutput::vtu_data(const fem::State& state) const {
@@ -193,6 +202,7 @@ void RunOutput::finish_summary(nlohmann::json& j, double wall_seconds, const sol
   j["dofs"] = model_.dofs->num_dofs();
   j["wall_seconds"] = wall_seconds;
   j["seconds"] = {{"forces_and_stiffness", times.forces_and_stiffness},
+                  {"collision", times.collision},
                   {"linear_solve", times.linear_solve},
                   {"line_search", times.line_search},
                   {"other", std::max(0.0, wall_seconds - times.total())}};

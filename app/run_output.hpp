@@ -14,6 +14,7 @@
 ///   summary.json           status, message, counts, time per phase
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -54,7 +55,10 @@ class RunOutput {
   void write_time_iteration(const solver::TimeStepRecord& step, const solver::IterationRecord& iteration);
   void write_output(int output, double time, const fem::State& state, const NodalVectors& velocity);
   void write_dynamic_summary(const solver::DynamicResult& result, double wall_seconds, const std::string& scene_name);
-  DynamicEnergies energies(const fem::State& state, const NodalVectors& velocity) const;
+  /// Kinetic, elastic and gravitational energy of a state; the contact energy is taken from
+  /// `contact` (statistics of the same state) when the model has contact.
+  DynamicEnergies energies(const fem::State& state, const NodalVectors& velocity,
+                           const contact::ContactStatistics* contact) const;
   void write_summary(const solver::StaticResult& result, double wall_seconds, const std::string& scene_name);
 
   const std::string& directory() const { return directory_; }
@@ -63,8 +67,12 @@ class RunOutput {
   io::VtuData vtu_data(const fem::State& state) const;
   /// Adds the mesh sizes and the time per phase to `j` and writes summary.json.
   void finish_summary(nlohmann::json& j, double wall_seconds, const solver::PhaseTimes& times) const;
-  /// Adds a steps.csv row with the reactions and contact figures; `flush` rewrites the file now.
-  void write_row(std::vector<io::CsvTable::Cell> row, const fem::State& state, bool flush = true);
+  /// Contact figures of `state` (one collision update and energy evaluation), none without contact.
+  std::optional<contact::ContactStatistics> contact_statistics(const fem::State& state) const;
+  /// Adds a steps.csv row with the reactions and the contact figures `contact` (of the same
+  /// state); `flush` rewrites the file now.
+  void write_row(std::vector<io::CsvTable::Cell> row, const fem::State& state,
+                 const contact::ContactStatistics* contact, bool flush = true);
   std::string directory_;
   const fem::Problem& problem_;
   const StaticModel& model_;

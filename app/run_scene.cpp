@@ -9,13 +9,29 @@
 #include "run_output.hpp"
 #include "sinew/core/log.hpp"
 #include "sinew/io/progress.hpp"
-#include "sinew/scene/build_contact.hpp"
 #include "sinew/scene/build_problem.hpp"
 #include "static_model.hpp"
 
 namespace sinew::app {
 
 namespace {
+
+/// Logs a line above the progress bar (clears the bar's line first; the bar redraws itself).
+void log_line(const io::ProgressBar& bar, spdlog::level::level_enum level, const std::string& text) {
+  if (bar.enabled()) fmt::print(stderr, "\r\033[K");
+  logger().log(level, text);
+}
+
+/// "forces and stiffness 41 %, collision 12 %, linear solve 30 %, line search 9 %, other 8 %"
+/// of `wall_seconds`.
+std::string phase_split(const solver::PhaseTimes& t, double wall_seconds) {
+  const double total = std::max(wall_seconds, 1e-12);
+  auto percent = [&](double seconds) { return 100 * seconds / total; };
+  return fmt::format("forces and stiffness {:.0f} %, collision {:.0f} %, linear solve {:.0f} %, line search {:.0f} %, "
+                     "other {:.0f} %",
+                     percent(t.forces_and_stiffness), percent(t.collision), percent(t.linear_solve),
+                     percent(t.line_search), percent(std::max(0.0, wall_seconds - t.total())));
+}
 
 RunReport run_dynamics(const scene::SceneConfig& scene, const StaticModel& model,
                        RunOutput& output, const RunOptions& options, std::chrono::steady_clock::time_point start) {
@@ -28,25 +44,22 @@ RunReport run_dynamics(const scene::SceneConfig& scene, const StaticModel& model
                   model.critical_time_step, model.contact_critical_time_step, dyn.explicit_safety * model.critical_time_step, dyn.explicit_safety,
                   std::ceil(dyn.end_time / (dyn.explicit_safety * model.critical_time_step)));
   io::ProgressBar bar({.total = dyn.end_time, .label = scene.name});
-  auto log_line = [&](auto level, const std::string& text) {
-    if (bar.enabled()) fmt::print(stderr, "\r\033[K");
-    logger().log(level, text);
-  };
   solver::DynamicCallbacks callbacks;
   callbacks.on_iteration = [&](const solver::TimeStepRecord& step, const solver::IterationRecord& it) {
     output.write_time_iteration(step, it);
+    if (options.on_iteration) options.on_iteration(step.step + 1, step.time, it);
   };
   callbacks.on_step = [&](const solver::TimeStepRecord& step, const fem::State& state, const NodalVectors& velocity) {
     output.write_time_step(step, state, velocity);
     if (options.log_steps && dyn.integrator != Integrator::Explicit)
-      log_line(spdlog::level::info, fmt::format("step {:5d}  t {:.6g}  h {:.3g}  newton {:2d}  |r| {:.2e}", step.step,
+      log_line(bar, spdlog::level::info, fmt::format("step {:5d}  t {:.6g}  h {:.3g}  newton {:2d}  |r| {:.2e}", step.step,
                                                 step.time, step.step_size, step.newton_iterations, step.residual));
     bar.update(step.time, fmt::format("t {:.4g}  h {:.2g}", step.time, step.step_size));
   };
   callbacks.on_output = [&](int k, const solver::TimeStepRecord& step, const fem::State& state,
                             const NodalVectors& velocity) { output.write_output(k, step.time, state, velocity); };
   callbacks.on_cut = [&](const solver::TimeStepRecord& step, const std::string& why) {
-    log_line(spdlog::level::warn,
+    log_line(bar, spdlog::level::warn,
              fmt::format("time step to t = {:.6g} (h = {:.3g}) failed, halving: {}", step.time, step.step_size, why));
   };
   solver::DynamicSetup setup;
@@ -59,17 +72,16 @@ RunReport run_dynamics(const scene::SceneConfig& scene, const StaticModel& model
   bar.finish();
   report.wall_seconds = elapsed();
   report.success = report.dynamic_result.success;
-  report.message = report.dynamic_result.message;
+  report.message = report.success ? fmt::format("solved: t = {:.6g} in {} time steps, {} Newton iterations, {} cuts",
+                                                 report.dynamic_result.time, report.dynamic_result.steps,
+                                                 report.dynamic_result.newton_iterations, report.dynamic_result.cuts)
+                                   : report.dynamic_result.message;
   if (!report.success) output.write_state("last_converged.vtu", report.dynamic_result.last_state);
   output.write_dynamic_summary(report.dynamic_result, report.wall_seconds, scene.name);
   const auto& r = report.dynamic_result;
-  const auto& t = r.times;
-  const double total = std::max(report.wall_seconds, 1e-12);
-  logger().info("{} at t = {:.6g} in {:.2f} s: {} steps (h {:.3g} .. {:.3g}), {} Newton iterations, {} cuts; forces "
-                "and stiffness {:.0f} %, linear solve {:.0f} %, line search {:.0f} %, other {:.0f} %",
+  logger().info("{} at t = {:.6g} in {:.2f} s: {} steps (h {:.3g} .. {:.3g}), {} Newton iterations, {} cuts; {}",
                 report.success ? "done" : "stopped", r.time, report.wall_seconds, r.steps, r.min_step, r.max_step,
-                r.newton_iterations, r.cuts, 100 * t.forces_and_stiffness / total, 100 * t.linear_solve / total,
-                100 * t.line_search / total, 100 * std::max(0.0, total - t.total()) / total);
+                r.newton_iterations, r.cuts, phase_split(r.times, report.wall_seconds));
   return report;
 }
 
@@ -81,16 +93,14 @@ RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) 
 
   // Everything that can fail on bad input happens before the first file is written.
   const fem::Problem problem = scene::build_problem(scene);
-  std::optional<ContactInput> contact;
-  if (scene.contact.enabled) {
-    scene::ContactSetup setup = scene::build_contact(scene, problem);
-    const auto& penalty = setup.geometry.penalty;
+  const std::optional<ContactInput> contact = make_contact_input(scene, problem);
+  if (contact) {
+    const auto& penalty = contact->geometry.penalty;
     for (Index a = 0; a < penalty.rows(); ++a)
       for (Index b = a; b < penalty.cols(); ++b)
         if (penalty(a, b) > 0)
-          logger().info("contact {} / {}: penalty {:.4g} (force/length^3)", setup.body_names[static_cast<std::size_t>(a)],
-                        setup.body_names[static_cast<std::size_t>(b)], penalty(a, b));
-    contact = ContactInput{std::move(setup.geometry), setup.options, std::move(setup.body_names)};
+          logger().info("contact {} / {}: penalty {:.4g} (force/length^3)", contact->body_names[static_cast<std::size_t>(a)],
+                        contact->body_names[static_cast<std::size_t>(b)], penalty(a, b));
   }
   const StaticModel model =
       make_static_model(problem, scene.solver, contact ? &*contact : nullptr, &scene.dynamics);
@@ -101,14 +111,11 @@ RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) 
   if (scene.dynamics.enabled) return run_dynamics(scene, model, output, options, start);
   const int increments = std::max(1, scene.solver.stepping.increments);
   io::ProgressBar bar({.total = 1.0, .label = scene.name});
-  auto log_line = [&](auto level, const std::string& text) {
-    if (bar.enabled()) fmt::print(stderr, "\r\033[K");
-    logger().log(level, text);
-  };
 
   solver::StaticCallbacks callbacks;
   callbacks.on_iteration = [&](const solver::StepRecord& step, const solver::IterationRecord& it) {
     output.write_iteration(step, it);
+    if (options.on_iteration) options.on_iteration(step.step, step.lambda, it);
     bar.update(step.lambda - step.step_size,
                fmt::format("increment {}/{}  newton {}  |r|={:.2e}", step.increment, increments, it.iteration,
                            it.residual));
@@ -116,7 +123,7 @@ RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) 
   callbacks.on_step = [&](const solver::StepRecord& step, const fem::State& state) {
     output.write_step(step, state);
     if (options.log_steps)
-      log_line(spdlog::level::info,
+      log_line(bar, spdlog::level::info,
                fmt::format("step {:4d}  increment {}/{}  lambda {:.5f}  newton {:2d}  |r| {:.2e} (scale {:.2e})  "
                            "energy {:.6e}",
                            step.step, step.increment, increments, step.lambda, step.newton_iterations, step.residual,
@@ -124,7 +131,7 @@ RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) 
     bar.update(step.lambda, fmt::format("increment {}/{}", step.increment, increments));
   };
   callbacks.on_cut = [&](const solver::StepRecord& step, const std::string& why) {
-    log_line(spdlog::level::warn,
+    log_line(bar, spdlog::level::warn,
              fmt::format("step to lambda {:.5f} (size {:.3g}) failed, halving: {}", step.lambda, step.step_size, why));
   };
   callbacks.on_increment = [&](int k, const fem::State& state) { output.write_increment(k, increments, state); };
@@ -137,12 +144,8 @@ RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) 
   report.message = report.result.message;
   if (!report.success) output.write_state("last_converged.vtu", report.result.last_converged);
   output.write_summary(report.result, report.wall_seconds, scene.name);
-  const auto& t = report.result.times;
-  const double total = std::max(report.wall_seconds, 1e-12);
-  logger().info("{} in {:.2f} s: forces and stiffness {:.0f} %, linear solve {:.0f} %, line search {:.0f} %, other {:.0f} %",
-                report.success ? "done" : "stopped", report.wall_seconds, 100 * t.forces_and_stiffness / total,
-                100 * t.linear_solve / total, 100 * t.line_search / total,
-                100 * std::max(0.0, total - t.total()) / total);
+  logger().info("{} in {:.2f} s: {}", report.success ? "done" : "stopped", report.wall_seconds,
+                phase_split(report.result.times, report.wall_seconds));
   return report;
 }
 

@@ -2,6 +2,7 @@
 /// @file run_scene.hpp
 /// `sinew run`: load and check a scene, build the problem, solve, write the outputs.
 
+#include <functional>
 #include <string>
 
 #include "sinew/scene/scene_config.hpp"
@@ -14,6 +15,9 @@ struct RunOptions {
   std::string output_directory = "out";
   bool progress_bar = true;  ///< drawn only when stderr is a terminal
   bool log_steps = true;     ///< one log line per accepted load step
+  /// Called after newton.csv got the row of every Newton iteration (step counter, then the load
+  /// parameter of a static step or the target time of a dynamic one).
+  std::function<void(int step, double lambda_or_time, const solver::IterationRecord& iteration)> on_iteration;
 };
 
 struct RunReport {

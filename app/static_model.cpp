@@ -6,8 +6,15 @@
 #include "sinew/fem/mass_matrix.hpp"
 #include "sinew/fem/stable_time_step.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
+#include "sinew/scene/build_contact.hpp"
 
 namespace sinew::app {
+
+std::optional<ContactInput> make_contact_input(const scene::SceneConfig& scene, const fem::Problem& problem) {
+  if (!scene.contact.enabled) return std::nullopt;
+  scene::ContactSetup setup = scene::build_contact(scene, problem);
+  return ContactInput{std::move(setup.geometry), setup.options, std::move(setup.body_names)};
+}
 
 StaticModel make_static_model(const fem::Problem& problem, const solver::StaticSolverOptions& options,
                               const ContactInput* contact, const scene::DynamicsConfig* dynamics) {

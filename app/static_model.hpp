@@ -5,6 +5,7 @@
 /// the output live elsewhere.
 
 #include <memory>
+#include <optional>
 
 #include "sinew/contact/contact_energy.hpp"
 #include "sinew/fem/elastic_energy.hpp"
@@ -39,6 +40,10 @@ struct ContactInput {
   contact::ContactOptions options;
   std::vector<std::string> body_names;
 };
+
+/// The contact input of a scene with contact enabled (material depths, penalties, options;
+/// throws InputError on bad contact settings), none otherwise.
+std::optional<ContactInput> make_contact_input(const scene::SceneConfig& scene, const fem::Problem& problem);
 
 /// `problem` must outlive the model. With `contact`, a contact energy joins the total potential.
 /// With `dynamics` (enabled), the inertia and viscosity terms of time integration join it too,

@@ -79,6 +79,7 @@ void BM_CompressBlock(benchmark::State& state, solver::LoadSteppingOptions::Pred
     state.counters["forces_stiffness_s"] = t.forces_and_stiffness;
     state.counters["linear_solve_s"] = t.linear_solve;
     state.counters["line_search_s"] = t.line_search;
+    state.counters["collision_s"] = t.collision;
     state.counters["other_s"] = std::max(0.0, seconds - t.total());
     state.counters["mesh_s"] = mesh_seconds;
   }

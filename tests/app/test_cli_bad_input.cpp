@@ -262,5 +262,77 @@ TEST_F(BadInput, ImpossibleMotionStopsWithExitCode2AndKeepsTheLastConvergedState
   EXPECT_LT(reached, 10.0 / 12.0);
 }
 
+TEST_F(BadInput, ValidateChecksTheContactSetupLikeARun) {
+  // A depth field on a generated mesh only fails when the contact term is built: validate must
+  // build it too, and say the same as run.
+  json scene = small_block_scene();
+  scene["bodies"][0]["contact"] = {{"depth_field", "thickness"}};
+  scene["contact"] = {{"self_contact", true}};
+  write_scene(scene);
+  const CommandResult validated = run_sinew({"validate", scene_path.string()}, directory);
+  EXPECT_EQ(validated.exit_code, 1) << validated.out;
+  EXPECT_THAT(validated.err, HasSubstr("bodies[0].contact.depth_field:"));
+  const CommandResult result = run_rejected();
+  EXPECT_THAT(result.err, HasSubstr("bodies[0].contact.depth_field:"));
+  // The control: without the field, validate reports the contact and the dynamics it checked.
+  scene["bodies"][0].erase("contact");
+  scene["dynamics"] = {{"integrator", "implicit-euler"}, {"end_time", 1.0}, {"output_interval", 0.5}};
+  write_scene(scene);
+  const CommandResult valid = run_sinew({"validate", scene_path.string()}, directory);
+  EXPECT_EQ(valid.exit_code, 0) << valid.err;
+  EXPECT_THAT(valid.out, HasSubstr("contact between 1 bodies, dynamics)"));
+}
+
+// The same impossible motion in time: an implicit step halved below min_time_step, and an
+// explicit run stopped by the first inverted element. Both keep what was written and say why.
+
+TEST_F(BadInput, ImplicitStepBelowMinTimeStepStopsWithExitCode2AndKeepsTheLastConvergedState) {
+  json scene = small_block_scene();
+  scene["boundary_conditions"][1]["motion"]["translation"] = {0, 0, -12};
+  scene["dynamics"] = {{"integrator", "implicit-euler"}, {"end_time", 1.0}, {"output_interval", 0.25},
+                       {"time_step", 0.05}, {"min_time_step", 0.01}};
+  write_scene(scene);
+  const CommandResult result = run_scene_file(scene_path, output, directory);
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_THAT(result.err, HasSubstr("could not be solved even with h ="));
+  EXPECT_THAT(result.err, HasSubstr("(min_time_step 0.01)"));
+  EXPECT_THAT(result.err, HasSubstr("last_converged.vtu"));
+  EXPECT_TRUE(fs::is_regular_file(output / "last_converged.vtu"));
+  ASSERT_TRUE(fs::is_regular_file(output / "summary.json"));
+  const json summary = json::parse(read_text(output / "summary.json"));
+  EXPECT_EQ(summary.at("success"), false);
+  EXPECT_THAT(summary.at("message").get<std::string>(), HasSubstr("min_time_step"));
+  // Squeezed most of the way in time (the motion is linear over end_time), not through the bottom.
+  const double reached = summary.at("time_reached").get<double>();
+  EXPECT_GT(reached, 0.25);
+  EXPECT_LT(reached, 10.0 / 12.0);
+  // The log holds every completed step, the last one at the time reached.
+  const std::string steps = read_text(output / "steps.csv");
+  EXPECT_NE(steps.find("time"), std::string::npos);
+  EXPECT_GT(std::count(steps.begin(), steps.end(), '\n'), 2);
+}
+
+TEST_F(BadInput, ExplicitRunStopsAtTheFirstInvertedElementWithExitCode2) {
+  json scene = small_block_scene();
+  scene["boundary_conditions"][1]["motion"]["translation"] = {0, 0, -12};
+  scene["dynamics"] = {{"integrator", "explicit"}, {"end_time", 1.0}, {"output_interval", 0.25}};
+  write_scene(scene);
+  const CommandResult result = run_scene_file(scene_path, output, directory);
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_THAT(result.err, HasSubstr("explicit integration: an element inverted at t ="));
+  EXPECT_THAT(result.err, HasSubstr("lower explicit_safety (now 0.5) or use the implicit integrator"));
+  EXPECT_TRUE(fs::is_regular_file(output / "last_converged.vtu"));
+  ASSERT_TRUE(fs::is_regular_file(output / "summary.json"));
+  const json summary = json::parse(read_text(output / "summary.json"));
+  EXPECT_EQ(summary.at("success"), false);
+  const double reached = summary.at("time_reached").get<double>();
+  EXPECT_GT(reached, 0.25);
+  EXPECT_LT(reached, 10.0 / 12.0);
+  // The outputs before the failure are complete VTUs listed in the series.
+  const std::string pvd = read_text(output / "sinew.pvd");
+  EXPECT_NE(pvd.find("vtu/output_0000.vtu"), std::string::npos);
+  EXPECT_TRUE(fs::is_regular_file(output / "vtu" / "output_0000.vtu"));
+}
+
 }  // namespace
 }  // namespace sinew::app_test

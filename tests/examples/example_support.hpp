@@ -8,12 +8,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -81,6 +83,13 @@ struct CsvTable {
     for (const auto& row : rows) values.push_back(row.at(c));
     return values;
   }
+  /// Largest value of a column (-inf for a table without rows).
+  double column_max(const std::string& name) const {
+    const std::size_t c = index(name);
+    double largest = -std::numeric_limits<double>::infinity();
+    for (const auto& row : rows) largest = std::max(largest, row.at(c));
+    return largest;
+  }
 };
 
 inline std::vector<std::string> split_commas(const std::string& line) {
@@ -105,6 +114,28 @@ inline CsvTable read_csv(const fs::path& path) {
       throw std::runtime_error(path.string() + ": a row has " + std::to_string(row.size()) + " fields, the header " +
                                std::to_string(table.columns.size()));
     }
+    table.rows.push_back(std::move(row));
+  }
+  return table;
+}
+
+/// Only the named numeric columns of a CSV file whose other columns may hold text (no quoted
+/// commas in the file), in the order given.
+inline CsvTable read_csv_columns(const fs::path& path, const std::vector<std::string>& names) {
+  std::istringstream in(read_text(path));
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error(path.string() + " is empty");
+  CsvTable header;
+  header.columns = split_commas(line);
+  std::vector<std::size_t> picked;
+  for (const auto& name : names) picked.push_back(header.index(name));
+  CsvTable table;
+  table.columns = names;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const auto fields = split_commas(line);
+    std::vector<double> row;
+    for (const std::size_t c : picked) row.push_back(std::stod(fields.at(c)));
     table.rows.push_back(std::move(row));
   }
   return table;

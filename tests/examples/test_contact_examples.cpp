@@ -44,6 +44,10 @@ TEST(ContactExamples, HertzBallFollowsHertzLawForSmallIndentation) {
   EXPECT_NEAR(exponent, 1.5, 0.06);
   constexpr double kRecordedTopForce = -0.4703569;  // N, quarter model, d = 0.5 mm
   EXPECT_NEAR(steps.at(4, "top.fz"), kRecordedTopForce, 2e-3 * std::abs(kRecordedTopForce));
+  // The collision phase (broad and narrow phase) is timed on its own, inside the run's wall time.
+  const auto& times = run.report.result.times;
+  EXPECT_GT(times.collision, 0);
+  EXPECT_LE(times.total(), run.report.wall_seconds);
 }
 
 // stacked-blocks: the contact patch test with non-matching meshes.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -54,6 +55,8 @@ DynamicResult solve_implicit(Objective& objective, const DynamicTerms& terms, co
   NewtonContext context;
   context.characteristic_length = setup.characteristic_length;
   context.reference_force = setup.reference_force;
+  if (with_inertia && terms.inertia) context.transient_terms.push_back(terms.inertia);
+  if (terms.viscosity) context.transient_terms.push_back(terms.viscosity);
   TimeStepRecord attempt;
   context.on_iteration = [&](const IterationRecord& it) {
     if (callbacks.on_iteration) callbacks.on_iteration(attempt, it);
@@ -80,9 +83,7 @@ DynamicResult solve_implicit(Objective& objective, const DynamicTerms& terms, co
     objective.set_load_parameter(lambda);
     if (with_inertia) terms.inertia->set_center_and_scale(current.x + h * velocity, 1.0 / (h * h));
     if (terms.viscosity) terms.viscosity->set_center_and_scale(current.x, 1.0 / h);
-    auto t0 = Clock::now();
     objective.begin_step(trial);
-    result.times.other += seconds_since(t0);
     const NewtonResult newton =
         newton_solve(objective, trial, solver_options.newton, *linear, K, context, result.times);
     result.newton_iterations += newton.iterations;
@@ -130,8 +131,7 @@ DynamicResult solve_implicit(Objective& objective, const DynamicTerms& terms, co
 }
 
 DynamicResult solve_explicit(Objective& objective, const DynamicTerms& terms, const DynamicOptions& options,
-                             const StaticSolverOptions& solver_options, const DynamicSetup& setup,
-                             const DynamicCallbacks& callbacks) {
+                             const DynamicSetup& setup, const DynamicCallbacks& callbacks) {
   if (!terms.inertia) throw std::invalid_argument("solve_dynamic: explicit integration needs the (lumped) mass");
   if (!(setup.critical_time_step > 0) || !std::isfinite(setup.critical_time_step))
     throw std::invalid_argument("solve_dynamic: explicit integration needs the critical time step (> 0)");
@@ -186,12 +186,12 @@ DynamicResult solve_explicit(Objective& objective, const DynamicTerms& terms, co
   objective.set_load_parameter(0.0);
   objective.begin_step(current);
   auto acceleration = [&](const fem::State& state, const NodalVectors& velocity_full) {
-    auto t0 = Clock::now();
+    std::optional<PhaseTimer> forces_timer(std::in_place, result.times.forces_and_stiffness, objective);
     NodalVectors g = objective.full_gradient(state);
     if (terms.viscosity) g += terms.viscosity->multiply(velocity_full);
     const VectorX gq = dofs.reduce_gradient(state, g);
-    result.times.forces_and_stiffness += seconds_since(t0);
-    t0 = Clock::now();
+    forces_timer.reset();
+    const auto t0 = Clock::now();
     VectorX a = -solve_mass(gq);
     result.times.linear_solve += seconds_since(t0);
     return a;
@@ -221,13 +221,12 @@ DynamicResult solve_explicit(Objective& objective, const DynamicTerms& terms, co
     dofs.sync(next, lambda);
     objective.set_load_parameter(lambda);
     if (options.explicit_rebuild_every > 0 && (result.steps + 1) % options.explicit_rebuild_every == 0) {
-      const auto t0 = Clock::now();
       objective.begin_step(next);
-      result.times.other += seconds_since(t0);
     }
     if (!objective.is_valid(next)) {
       result.message = fmt::format(
-          "explicit integration: an element inverted at t = {:.6g} (step {}, h = {:.3g}); lower explicit_safety "
+          "explicit integration: an element inverted at t = {:.6g} (step {}, h = {:.3g}); if the motion is one a solid "
+          "can follow, lower explicit_safety "
           "(now {}) or use the implicit integrator",
           t + h, result.steps + 1, h, options.explicit_safety);
       break;
@@ -254,7 +253,6 @@ DynamicResult solve_explicit(Objective& objective, const DynamicTerms& terms, co
       ++result.outputs;
     }
   }
-  (void)solver_options;
   result.success = result.message.empty();
   result.time = t;
   result.last_state = std::move(current);
@@ -268,9 +266,12 @@ DynamicResult solve_dynamic(Objective& objective, const DynamicTerms& terms, con
                             const StaticSolverOptions& newton_options, const DynamicSetup& setup,
                             const DynamicCallbacks& callbacks) {
   check_options(options);
-  if (options.integrator == DynamicOptions::Integrator::Explicit)
-    return solve_explicit(objective, terms, options, newton_options, setup, callbacks);
-  return solve_implicit(objective, terms, options, newton_options, setup, callbacks);
+  const double collision_before = objective.collision_seconds();
+  DynamicResult result = options.integrator == DynamicOptions::Integrator::Explicit
+                              ? solve_explicit(objective, terms, options, setup, callbacks)
+                              : solve_implicit(objective, terms, options, newton_options, setup, callbacks);
+  result.times.collision = objective.collision_seconds() - collision_before;
+  return result;
 }
 
 }  // namespace sinew::solver

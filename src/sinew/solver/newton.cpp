@@ -1,5 +1,6 @@
 #include "sinew/solver/newton.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -20,6 +21,22 @@ class Stopwatch {
   double& sink_;
   std::chrono::steady_clock::time_point start_;
 };
+
+}  // namespace
+
+PhaseTimer::PhaseTimer(double& sink, const Objective& objective)
+    : sink_(sink),
+      objective_(objective),
+      collision_start_(objective.collision_seconds()),
+      start_(std::chrono::steady_clock::now()) {}
+
+PhaseTimer::~PhaseTimer() {
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double collision = objective_.collision_seconds() - collision_start_;
+  sink_ += std::max(0.0, elapsed - collision);
+}
+
+namespace {
 
 double largest_displacement(const fem::State& a, const fem::State& b) {
   return (a.x - b.x).rowwise().norm().maxCoeff();
@@ -66,6 +83,15 @@ Direction newton_direction(const fem::SparseMatrix& K, bool fresh_pattern, const
   return d;
 }
 
+/// |g_q| of the objective without the transient terms, from the full gradient `full_g` at `state`.
+double equilibrium_residual(const fem::DofMap& dofs, const fem::State& state, const NodalVectors& full_g,
+                            double residual, const std::vector<const Energy*>& transient_terms) {
+  if (transient_terms.empty()) return residual;
+  NodalVectors transient = NodalVectors::Zero(full_g.rows(), 3);
+  for (const Energy* term : transient_terms) term->add_gradient(state.x, transient);
+  return dofs.reduce_gradient(state, full_g - transient).norm();
+}
+
 /// Residuals below this fraction of the reference force are round-off.
 constexpr double kRoundoffResidual = 1e-13;
 
@@ -78,7 +104,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
   NewtonResult result;
   double energy;
   {
-    Stopwatch watch(times.line_search);
+    PhaseTimer watch(times.line_search, objective);
     energy = objective.value(state);
   }
   if (!std::isfinite(energy)) {
@@ -89,7 +115,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
   NodalVectors full_g;
   VectorX g;
   {
-    Stopwatch watch(times.forces_and_stiffness);
+    PhaseTimer watch(times.forces_and_stiffness, objective);
     full_g = objective.full_gradient(state, &scale);
     g = dofs.reduce_gradient(state, full_g);
   }
@@ -98,6 +124,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
   record.residual = residual;
   record.force_scale = scale;
   record.energy = energy;
+  record.equilibrium_residual = equilibrium_residual(dofs, state, full_g, residual, context.transient_terms);
   if (context.on_iteration) context.on_iteration(record);
 
   double increment = std::numeric_limits<double>::infinity();
@@ -123,7 +150,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
 
     bool fresh;
     {
-      Stopwatch watch(times.forces_and_stiffness);
+      PhaseTimer watch(times.forces_and_stiffness, objective);
       fresh = objective.hessian(state, full_g, context.node_viscosity, K);
     }
     const Direction direction = newton_direction(K, fresh, g, linear, times);
@@ -140,7 +167,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
     double trial_scale = 0;
     for (; halvings <= options.max_line_search_steps; ++halvings, alpha *= 0.5) {
       {
-        Stopwatch watch(times.line_search);
+        PhaseTimer watch(times.line_search, objective);
         trial = dofs.apply_step(state, direction.dq, alpha);
         trial_energy = objective.value(trial);
       }
@@ -154,7 +181,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
         break;
       }
       if (residual_rule || flat) {
-        Stopwatch watch(times.forces_and_stiffness);
+        PhaseTimer watch(times.forces_and_stiffness, objective);
         trial_full_g = objective.full_gradient(trial, &trial_scale);
         trial_g = dofs.reduce_gradient(trial, trial_full_g);
         if (trial_g.norm() < residual) {
@@ -174,7 +201,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
     state = std::move(trial);
     energy = trial_energy;
     if (trial_full_g.rows() == 0) {
-      Stopwatch watch(times.forces_and_stiffness);
+      PhaseTimer watch(times.forces_and_stiffness, objective);
       full_g = objective.full_gradient(state, &scale);
       g = dofs.reduce_gradient(state, full_g);
     } else {
@@ -194,6 +221,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
     record.linear_iterations = direction.linear_iterations;
     record.increment = increment;
     record.regularization = direction.regularization;
+    record.equilibrium_residual = equilibrium_residual(dofs, state, full_g, residual, context.transient_terms);
     if (context.on_iteration) context.on_iteration(record);
   }
 }

@@ -5,8 +5,10 @@
 /// search that halves the step until the state is legal and the energy (or, as the seed
 /// did, the residual norm) decreases.
 
+#include <chrono>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "sinew/solver/linear_solver.hpp"
 #include "sinew/solver/objective.hpp"
@@ -24,15 +26,38 @@ struct IterationRecord {
   int linear_iterations = 0;      ///< of the linear solve that led here
   double increment = 0;           ///< largest node displacement of that step (length)
   double regularization = 0;      ///< diagonal shift added to K, relative to its diagonal
+  /// |g_q| without the transient terms (inertia, viscosity of time integration): the force
+  /// imbalance of the static problem at this iterate. Equals `residual` in static solves.
+  double equilibrium_residual = 0;
 };
 
-/// Wall-clock seconds per phase, accumulated.
+/// Wall-clock seconds per phase, accumulated. The phases do not overlap: collision detection
+/// (the terms' update and begin_step: the contact's broad and narrow phase) is taken out of
+/// the phase during which it ran, and solve_static / solve_dynamic set `collision` to the
+/// objective's collision time over the solve.
 struct PhaseTimes {
   double forces_and_stiffness = 0;  ///< gradients, Hessians, reduction to q-space
+  double collision = 0;             ///< broad and narrow phase (BVH refit, queries, clipping)
   double linear_solve = 0;          ///< analyze, factorize, solve
   double line_search = 0;           ///< energy evaluations of trial states
   double other = 0;
-  double total() const { return forces_and_stiffness + linear_solve + line_search + other; }
+  double total() const { return forces_and_stiffness + collision + linear_solve + line_search + other; }
+};
+
+/// Adds the wall time of its scope to `sink`, except the time `objective` spent in collision
+/// detection meanwhile (Objective::collision_seconds, counted as PhaseTimes::collision).
+class PhaseTimer {
+ public:
+  PhaseTimer(double& sink, const Objective& objective);
+  ~PhaseTimer();
+  PhaseTimer(const PhaseTimer&) = delete;
+  PhaseTimer& operator=(const PhaseTimer&) = delete;
+
+ private:
+  double& sink_;
+  const Objective& objective_;
+  double collision_start_;
+  std::chrono::steady_clock::time_point start_;
 };
 
 struct NewtonResult {
@@ -51,6 +76,9 @@ struct NewtonContext {
   /// (a state with no load at all has nothing to be relative to). 0 disables the floor.
   double reference_force = 0;
   VectorX node_viscosity;            ///< quasi-viscosity per node (force / length), or empty
+  /// Terms of the objective that belong to time integration (inertia, viscosity): left out of
+  /// IterationRecord::equilibrium_residual. Not owned.
+  std::vector<const Energy*> transient_terms;
   std::function<void(const IterationRecord&)> on_iteration;
 };
 

@@ -1,6 +1,7 @@
 #include "sinew/solver/objective.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -13,14 +14,26 @@ void Objective::set_load_parameter(double lambda) {
   for (auto* term : terms_) term->set_load_parameter(lambda);
 }
 
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
 void Objective::update_terms(const fem::State& state) {
   if (!state.x.allFinite()) return;
+  const auto start = std::chrono::steady_clock::now();
   for (auto* term : terms_) term->update(state.x);
+  collision_seconds_ += seconds_since(start);
 }
 
 void Objective::begin_step(const fem::State& state) {
   if (!state.x.allFinite()) return;
+  const auto start = std::chrono::steady_clock::now();
   for (auto* term : terms_) term->begin_step(state.x);
+  collision_seconds_ += seconds_since(start);
 }
 
 std::uint64_t Objective::pattern_revisions() const {

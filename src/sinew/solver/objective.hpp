@@ -33,6 +33,9 @@ class Objective {
   /// Full-space Hessian of the last hessian() call (for tangent predictors and tests).
   const BlockSparseMatrix& full_hessian() const { return H_; }
   const fem::DofMap& dofs() const { return dofs_; }
+  /// Wall-clock seconds spent so far in the terms' update() and begin_step() (collision
+  /// detection), accumulated over the objective's life.
+  double collision_seconds() const { return collision_seconds_; }
   const std::vector<Energy*>& terms() const { return terms_; }
 
  private:
@@ -45,6 +48,7 @@ class Objective {
   Index num_nodes_;
   BlockSparseMatrix H_;
   bool pattern_ready_ = false;
+  double collision_seconds_ = 0;
 };
 
 }  // namespace sinew::solver

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -19,7 +20,7 @@ fem::State tangent_prediction(Objective& objective, const fem::State& converged,
   const fem::DofMap& dofs = objective.dofs();
   const double lambda0 = converged.lambda;
   const double h = 1e-6 * std::max(1.0, std::abs(lambda0));
-  auto t0 = std::chrono::steady_clock::now();
+  std::optional<PhaseTimer> forces_timer(std::in_place, times.forces_and_stiffness, objective);
   objective.set_load_parameter(lambda0);
   const NodalVectors g0_full = objective.full_gradient(converged);
   const VectorX g0 = dofs.reduce_gradient(converged, g0_full);
@@ -33,12 +34,12 @@ fem::State tangent_prediction(Objective& objective, const fem::State& converged,
   objective.set_load_parameter(lambda0 + h);
   const VectorX gh = dofs.reduce_gradient(nudged, objective.full_gradient(nudged));
   objective.set_load_parameter(lambda_new);
-  times.forces_and_stiffness += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  forces_timer.reset();
 
   fem::State base = converged;
   dofs.sync(base, lambda_new);
   if (!linear_ready) return base;
-  t0 = std::chrono::steady_clock::now();
+  const auto t0 = std::chrono::steady_clock::now();
   VectorX dq;
   const LinearSolveStats stats = linear.solve(-(gh - g0) / h * (lambda_new - lambda0), dq);
   times.linear_solve += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -46,10 +47,8 @@ fem::State tangent_prediction(Objective& objective, const fem::State& converged,
   return dofs.apply_step(base, dq, 1.0);
 }
 
-}  // namespace
-
-StaticResult solve_static(Objective& objective, const StaticSolverOptions& options, const StaticSetup& setup,
-                          const StaticCallbacks& callbacks) {
+StaticResult solve_load_steps(Objective& objective, const StaticSolverOptions& options, const StaticSetup& setup,
+                              const StaticCallbacks& callbacks) {
   const fem::DofMap& dofs = objective.dofs();
   const LoadSteppingOptions& stepping = options.stepping;
   StaticResult result;
@@ -160,6 +159,16 @@ StaticResult solve_static(Objective& objective, const StaticSolverOptions& optio
   result.success = true;
   result.message = fmt::format("solved: {} increments, {} steps, {} Newton iterations, {} step cuts", increments,
                                result.steps, result.newton_iterations, result.cuts);
+  return result;
+}
+
+}  // namespace
+
+StaticResult solve_static(Objective& objective, const StaticSolverOptions& options, const StaticSetup& setup,
+                          const StaticCallbacks& callbacks) {
+  const double collision_before = objective.collision_seconds();
+  StaticResult result = solve_load_steps(objective, options, setup, callbacks);
+  result.times.collision = objective.collision_seconds() - collision_before;
   return result;
 }
 
