@@ -1,10 +1,12 @@
 #include "cli.hpp"
 
+#include <algorithm>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
 
+#include "convergence_study.hpp"
 #include "run_scene.hpp"
 #include "static_model.hpp"
 #include "sinew/scene/build_problem.hpp"
@@ -46,6 +48,39 @@ int run_cli(int argc, char** argv) {
   format->require_option(1);
   schema->add_option("-o,--output", schema_output, "write to this file instead of standard output");
 
+  auto* study = cli.add_subcommand("study", "studies that solve a scene many times");
+  study->require_subcommand(1);
+  auto* convergence = study->add_subcommand(
+      "convergence", "area integration against point collocation over penalties (dissertation 6.5): residual "
+                     "histories, converged or not, penetration table, force sweep");
+  std::string study_path;
+  ConvergenceStudyOptions study_options;
+  std::vector<std::string> study_methods{"area", "point"};
+  std::vector<double> sweep_translation, sweep_from;
+  convergence->add_option("scene", study_path, "scene file (JSON) with a contact section")->required();
+  convergence->add_option("-o,--output", study_options.output_directory, "output directory")->capture_default_str();
+  convergence->add_option("--penalties", study_options.penalties, "penalties to run (0: no contact)")
+      ->delimiter(',')
+      ->capture_default_str();
+  convergence->add_option("--methods", study_methods, "contact methods to run")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"area", "point"}))
+      ->capture_default_str();
+  convergence->add_option("--tolerance", study_options.tolerance,
+                          "converged: the last equilibrium residual is at most this fraction of the run's largest")
+      ->capture_default_str();
+  convergence->add_option("--end-time", study_options.end_time, "override the scene's dynamics end_time");
+  convergence->add_option("--sweep-body", study_options.sweep_body,
+                          "sweep this body rigidly through the others and record its contact forces");
+  convergence->add_option("--sweep-translation", sweep_translation, "the sweep's full translation (x y z)")
+      ->expected(3);
+  convergence->add_option("--sweep-from", sweep_from, "the sweep's first offset from the rest place (x y z)")
+      ->expected(3);
+  convergence->add_option("--sweep-positions", study_options.sweep_positions, "positions of the sweep")
+      ->capture_default_str();
+  convergence->add_option("--sweep-penalty", study_options.sweep_penalty, "penalty of the sweep's forces")
+      ->capture_default_str();
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -78,6 +113,28 @@ int run_cli(int argc, char** argv) {
       std::cout << fmt::format("{}: valid ({} bodies, {} nodes, {} tets, {} unknowns{})\n", validate_path,
                                config.bodies.size(), problem.mesh.num_nodes(), problem.mesh.num_tets(),
                                model.dofs->num_dofs(), extras);
+      return 0;
+    }
+    if (*convergence) {
+      study_options.methods.clear();
+      for (const auto& m : study_methods)
+        study_options.methods.push_back(m == "point" ? contact::ContactMethod::Point : contact::ContactMethod::Area);
+      if (sweep_from.size() == 3) study_options.sweep_from = Vector3(sweep_from[0], sweep_from[1], sweep_from[2]);
+      if (sweep_translation.size() == 3)
+        study_options.sweep_translation = Vector3(sweep_translation[0], sweep_translation[1], sweep_translation[2]);
+      if (!study_options.sweep_body.empty() && sweep_translation.size() != 3)
+        throw InputError("study convergence: --sweep-body needs --sweep-translation X Y Z");
+      study_options.progress = !quiet;
+      const auto config = scene::load_scene_file(study_path);
+      const ConvergenceStudyReport report = run_convergence_study(config, study_options);
+      const bool all_solved = std::all_of(report.runs.begin(), report.runs.end(),
+                                          [](const ConvergenceRun& r) { return r.solved; });
+      std::cout << penetration_table_markdown(report, study_options.methods);
+      logger().info("study written to {} (residuals.csv, runs.csv, penetration.md{}); plots: /usr/bin/python3 "
+                    "scripts/plot_convergence_study.py {}",
+                    study_options.output_directory, study_options.sweep_body.empty() ? "" : ", sweep_*.csv",
+                    study_options.output_directory);
+      if (!all_solved) logger().warn("some runs stopped before their end (see runs.csv); this is a result, not an error");
       return 0;
     }
     run_options.progress_bar = !no_progress;

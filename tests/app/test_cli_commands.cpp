@@ -145,5 +145,53 @@ TEST(Cli, SuccessfulRunWritesEveryOutputAtomically) {
   EXPECT_EQ(summary.at("scene"), "small-block");
 }
 
+// `sinew study convergence` on a coarse, short variant of examples/convergence-corner.json.
+json coarse_convergence_scene() {
+  json scene = json::parse(read_text(kSource / "examples" / "convergence-corner.json"));
+  scene["bodies"][0]["mesh"]["generate"]["element_size"] = 2.5;
+  scene["bodies"][1]["mesh"]["generate"]["element_size"] = 2.5;
+  scene["output"]["vtu"] = false;
+  return scene;
+}
+
+TEST(Cli, StudyConvergencePrintsTheTableAndWritesItsFiles) {
+  ScratchDirectory directory;
+  const fs::path scene = directory / "scene.json";
+  write_text(scene, coarse_convergence_scene().dump(2));
+  const fs::path study = directory / "study";
+  const CommandResult result =
+      run_sinew({"study", "convergence", scene.string(), "-o", study.string(), "--penalties", "0,1000", "--methods",
+                 "area", "--end-time", "5e-5", "--sweep-body", "right", "--sweep-translation", "0", "0", "-0.5",
+                 "--sweep-positions", "3"},
+                directory);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_THAT(result.out, HasSubstr("| penalty ε | area integration |"));
+  EXPECT_THAT(result.out, HasSubstr("| 0 |"));
+  EXPECT_THAT(result.out, HasSubstr("| 1000 |"));
+  EXPECT_THAT(result.err, HasSubstr("scripts/plot_convergence_study.py"));
+  for (const char* file : {"residuals.csv", "runs.csv", "penetration.md", "sweep_forces.csv", "sweep_totals.csv",
+                           "sweep.json", "area-eps0/steps.csv", "area-eps1000/newton.csv"})
+    EXPECT_TRUE(fs::is_regular_file(study / file)) << file;
+  EXPECT_FALSE(fs::exists(study / "point-eps0")) << "only the methods asked for run";
+}
+
+TEST(Cli, StudyConvergenceRejectsBadOptionsBeforeWriting) {
+  ScratchDirectory directory;
+  const fs::path scene = directory / "scene.json";
+  write_text(scene, coarse_convergence_scene().dump(2));
+  const fs::path study = directory / "study";
+  CommandResult result = run_sinew(
+      {"study", "convergence", scene.string(), "-o", study.string(), "--sweep-body", "right"}, directory);
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.err, HasSubstr("--sweep-body needs --sweep-translation X Y Z"));
+  result = run_sinew({"study", "convergence", scene.string(), "-o", study.string(), "--methods", "line"}, directory);
+  EXPECT_NE(result.exit_code, 0);
+  EXPECT_THAT(result.err + result.out, HasSubstr("line"));
+  result = run_sinew({"study", "convergence", scene.string(), "-o", study.string(), "--penalties", "10,-5"}, directory);
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.err, HasSubstr("penalty -5 must be finite and >= 0"));
+  EXPECT_FALSE(fs::exists(study));
+}
+
 }  // namespace
 }  // namespace sinew::app_test
