@@ -4,6 +4,11 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <limits>
+#include <string>
+
+#include "sinew/core/error.hpp"
+
 #include "support/contact_fixtures.hpp"
 #include "support/fd_check.hpp"
 
@@ -93,6 +98,36 @@ TEST_P(ContactEnergyMethods, ForcesSumToZeroAndCarryNoTorque) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, ContactEnergyMethods, ::testing::Values(ContactMethod::Area, ContactMethod::Point),
                          [](const auto& info) { return info.param == ContactMethod::Area ? "Area" : "Point"; });
+
+// A configuration whose broad phase finds more candidates than the cap (a wild Newton trial
+// state) is invalid: value +inf, no pairs built, and a gradient request says why. Below the
+// cap the same configuration is valid and has pairs.
+TEST(ContactEnergyCap, TooManyCandidatesMakeTheStateInvalidWithoutBuildingPairs) {
+  const auto boxes = st::two_boxes(2, Vector3(0.62, 0.31, 0.17), 0.3, 7.0);
+  ContactEnergy roomy(boxes.geometry, {ContactMethod::Area, PairHessian::Exact});
+  roomy.update(boxes.x);
+  ASSERT_TRUE(roomy.is_valid(boxes.x));
+  const Index candidates = roomy.last_update_times().candidates;
+  ASSERT_GT(candidates, 20);
+  ASSERT_GT(roomy.active_pairs().size(), 0u);
+
+  ContactOptions tight{ContactMethod::Area, PairHessian::Exact};
+  tight.candidate_cap = static_cast<std::size_t>(candidates) - 1;
+  ContactEnergy capped(boxes.geometry, tight);
+  capped.update(boxes.x);
+  EXPECT_FALSE(capped.is_valid(boxes.x));
+  EXPECT_EQ(capped.value(boxes.x), std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(capped.active_pairs().empty());
+  NodalVectors g = NodalVectors::Zero(boxes.x.rows(), 3);
+  try {
+    capped.add_gradient(boxes.x, g);
+    ADD_FAILURE() << "a gradient at an overflowed configuration was computed";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("candidate pairs at this configuration (more than the cap)"),
+              std::string::npos)
+        << e.what();
+  }
+}
 
 }  // namespace
 }  // namespace sinew::contact

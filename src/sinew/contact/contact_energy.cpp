@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -139,6 +140,15 @@ void ContactEnergy::update(const Positions& x) {
   const auto candidates = collision::triangle_tet_candidates(x, geometry_.surface, geometry_.tets, tree_);
   times_.query = seconds_since(t0);
   times_.candidates = static_cast<Index>(candidates.size());
+  const std::size_t cap = options_.candidate_cap > 0
+                              ? options_.candidate_cap
+                              : std::max<std::size_t>(100000, 20 * static_cast<std::size_t>(geometry_.tets.rows()));
+  overflowed_ = candidates.size() > cap;
+  if (overflowed_) {
+    active_.clear();
+    times_.clip = 0;
+    return;
+  }
   t0 = Clock::now();
   // Narrow phase. Most candidates are neighbours that merely touch the triangle's plane from one
   // side; they are rejected by the plane test before clipping, and only kept pairs are stored.
@@ -206,8 +216,14 @@ std::vector<std::pair<Index, Index>> ContactEnergy::active_pairs() const {
   return out;
 }
 
+bool ContactEnergy::is_valid(const Positions& x) const {
+  require_current(x);
+  return !overflowed_;
+}
+
 double ContactEnergy::value(const Positions& x) const {
   require_current(x);
+  if (overflowed_) return std::numeric_limits<double>::infinity();
   std::vector<double> values(active_.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, active_.size(), 64), [&](const auto& range) {
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
@@ -223,6 +239,10 @@ double ContactEnergy::value(const Positions& x) const {
 
 void ContactEnergy::add_gradient(const Positions& x, NodalVectors& grad) const {
   require_current(x);
+  if (overflowed_)
+    throw Error(fmt::format("contact: {} candidate pairs at this configuration (more than the cap): the bodies "
+                            "overlap far beyond what contact can resolve",
+                            times_.candidates));
   std::vector<PairVector> gradients(active_.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, active_.size(), 64), [&](const auto& range) {
     for (std::size_t k = range.begin(); k != range.end(); ++k) {

@@ -46,6 +46,9 @@ struct ContactGeometry {
 struct ContactOptions {
   ContactMethod method = ContactMethod::Area;
   PairHessian hessian = PairHessian::Exact;
+  /// Most (triangle, tet) candidates of the broad phase a configuration may have before it is
+  /// declared invalid (see ContactEnergy::is_valid); 0 = automatic, max(100000, 20 x #tets).
+  std::size_t candidate_cap = 0;
 };
 
 /// Per-configuration contact figures (for logs and output).
@@ -77,7 +80,13 @@ class ContactEnergy final : public Energy {
   ContactEnergy(ContactGeometry geometry, ContactOptions options);
 
   std::string_view name() const override { return "contact"; }
+  /// +inf when the last update() overflowed (see is_valid).
   double value(const Positions& x) const override;
+  /// False when the broad phase at x found more candidate pairs than ContactOptions::
+  /// candidate_cap (by default 20 per tet, at least 100000): the bodies overlap far beyond anything contact can resolve, as in a wild
+  /// Newton trial state. Such a state is rejected without building its pairs, which would take
+  /// memory in proportion to the overlap.
+  bool is_valid(const Positions& x) const override;
   void add_gradient(const Positions& x, NodalVectors& grad) const override;
   void add_hessian(const Positions& x, BlockSparseMatrix& H) const override;
   void hessian_pattern(std::vector<std::pair<Index, Index>>& pairs) const override;
@@ -119,6 +128,7 @@ class ContactEnergy final : public Energy {
   std::unordered_set<std::uint64_t> pairs_in_pattern_;
   std::uint64_t revision_ = 0;
   CollisionTimes times_;
+  bool overflowed_ = false;  ///< the last update() found more candidates than the cap
   /// Tets whose four nodes all have zero depth carry no energy (g ≡ 0) and are skipped.
   std::vector<char> tet_has_depth_;
 };

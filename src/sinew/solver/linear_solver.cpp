@@ -20,22 +20,22 @@ class CholmodSolver final : public LinearSolver {
   }
   void analyze(const SparseMatrix& K) override { llt_.analyzePattern(K); }
   bool factorize(const SparseMatrix& K) override {
-    K_ = &K;
-    llt_.factorize(K);
+    K_ = K;  // owned: the caller's matrix may be a temporary (a regularized copy)
+    llt_.factorize(K_);
     return llt_.info() == Eigen::Success;
   }
   LinearSolveStats solve(const VectorX& b, VectorX& x) override {
     LinearSolveStats stats;
     x = llt_.solve(b);
     stats.success = llt_.info() == Eigen::Success && x.allFinite();
-    stats.relative_residual = relative_residual(*K_, x, b);
+    stats.relative_residual = relative_residual(K_, x, b);
     return stats;
   }
   const char* name() const override { return "cholmod"; }
 
  private:
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt_;
-  const SparseMatrix* K_ = nullptr;
+  SparseMatrix K_;  ///< the matrix last factorized
 };
 
 template <class Solver>
@@ -48,15 +48,15 @@ class IterativeSolver final : public LinearSolver {
   }
   void analyze(const SparseMatrix& K) override { solver_.analyzePattern(K); }
   bool factorize(const SparseMatrix& K) override {
-    K_ = &K;
-    solver_.factorize(K);
+    K_ = K;  // owned: Eigen's solver keeps a reference to the matrix, which may be a temporary
+    solver_.factorize(K_);
     return solver_.info() != Eigen::NumericalIssue;
   }
   LinearSolveStats solve(const VectorX& b, VectorX& x) override {
     LinearSolveStats stats;
     x = solver_.solve(b);
     stats.iterations = static_cast<int>(solver_.iterations());
-    stats.relative_residual = relative_residual(*K_, x, b);
+    stats.relative_residual = relative_residual(K_, x, b);
     // Reaching the iteration cap is normal for the seed's loose GMRES: the result is used if it
     // reduced the residual at all.
     stats.success = x.allFinite() && stats.relative_residual < 1.0;
@@ -66,7 +66,7 @@ class IterativeSolver final : public LinearSolver {
 
  private:
   Solver solver_;
-  const SparseMatrix* K_ = nullptr;
+  SparseMatrix K_;  ///< the matrix last factorized (the solver refers to it)
   const char* name_;
 };
 
