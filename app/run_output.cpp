@@ -1,5 +1,6 @@
 #include "run_output.hpp"
 
+#include <cmath>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -49,6 +50,30 @@ RunOutput::RunOutput(std::string directory, const fem::Problem& problem, const S
                                "line_search_halvings", "linear_iterations", "increment", "regularization",
                                "equilibrium_residual"});
   series_ = std::make_unique<io::PvdSeries>(directory_ + "/sinew.pvd");
+  if (!problem.rigid_bodies.empty()) {
+    std::vector<std::string> rigid_columns =
+        model.mass ? std::vector<std::string>{"step", "time"} : std::vector<std::string>{"step", "increment", "lambda"};
+    for (const auto& r : problem.rigid_bodies)
+      for (const char* c : {"x", "y", "z", "rx", "ry", "rz", "angle_deg"}) rigid_columns.push_back(r.name + "." + c);
+    rigid_ = std::make_unique<io::CsvTable>(directory_ + "/rigid_bodies.csv", rigid_columns);
+  }
+}
+
+void RunOutput::write_rigid_row(std::vector<io::CsvTable::Cell> row, const fem::State& state, bool flush) {
+  if (!rigid_) return;
+  for (std::size_t r = 0; r < problem_.rigid_bodies.size(); ++r) {
+    const fem::RigidPose& pose = state.rigid.at(r);
+    const Vector3 center = model_.dofs->rigid_center(r) + pose.t;
+    const Eigen::AngleAxisd rotation(pose.R);
+    const Vector3 vector = rotation.angle() * rotation.axis();
+    for (int k = 0; k < 3; ++k) row.emplace_back(center[k]);
+    for (int k = 0; k < 3; ++k) row.emplace_back(vector[k]);
+    row.emplace_back(rotation.angle() * 180.0 / M_PI);
+  }
+  if (flush)
+    rigid_->add_row(row);
+  else
+    rigid_->append(row);
 }
 
 std::optional<contact::ContactStatistics> RunOutput::contact_statistics(const fem::State& state) const {
@@ -62,6 +87,8 @@ void RunOutput::write_step(const solver::StepRecord& step, const fem::State& sta
              static_cast<long long>(step.newton_iterations), step.residual, step.force_scale, step.energy,
              static_cast<long long>(step.cuts)},
             state, contact ? &*contact : nullptr);
+  write_rigid_row({static_cast<long long>(step.step), static_cast<long long>(step.increment), step.lambda}, state,
+                  true);
 }
 
 DynamicEnergies RunOutput::energies(const fem::State& state, const NodalVectors& velocity,
@@ -83,6 +110,7 @@ void RunOutput::write_time_step(const solver::TimeStepRecord& step, const fem::S
              step.residual, static_cast<long long>(step.cuts), e.kinetic, e.elastic, e.gravitational, e.contact,
              e.total()},
             state, contact ? &*contact : nullptr, /*flush=*/false);
+  write_rigid_row({static_cast<long long>(step.step), step.time}, state, /*flush=*/false);
 }
 
 void RunOutput::write_time_iteration(const solver::TimeStepRecord& step, const solver::IterationRecord& it) {
@@ -96,6 +124,7 @@ void RunOutput::write_output(int output, double time, const fem::State& state, c
   // Time steps are many: the CSV files are rewritten at output times, not after every step.
   steps_->flush();
   newton_->flush();
+  if (rigid_) rigid_->flush();
   if (!config_.vtu) return;
   const std::string name = fmt::format("vtu/output_{:04d}.vtu", output);
   io::VtuData data = vtu_data(state);
@@ -140,6 +169,7 @@ void RunOutput::write_dynamic_summary(const solver::DynamicResult& result, doubl
                                       const std::string& scene_name) {
   steps_->flush();
   newton_->flush();
+  if (rigid_) rigid_->flush();
   nlohmann::json j;
   j["scene"] = scene_name;
   j["success"] = result.success;

@@ -73,12 +73,18 @@ class RunOutput {
   /// state); `flush` rewrites the file now.
   void write_row(std::vector<io::CsvTable::Cell> row, const fem::State& state,
                  const contact::ContactStatistics* contact, bool flush = true);
+  /// Adds a rigid_bodies.csv row: `row` (step, increment or time, ...) then, per rigid body, the
+  /// current position of its reference point (the mean of its nodes at rest) and its rotation
+  /// (vector, radians; angle, degrees).
+  void write_rigid_row(std::vector<io::CsvTable::Cell> row, const fem::State& state, bool flush);
   std::string directory_;
   const fem::Problem& problem_;
   const StaticModel& model_;
   scene::OutputConfig config_;
   std::unique_ptr<io::CsvTable> steps_;
   std::unique_ptr<io::CsvTable> newton_;
+  /// rigid_bodies.csv: pose of every rigid body per accepted step (none without rigid bodies).
+  std::unique_ptr<io::CsvTable> rigid_;
   std::unique_ptr<io::PvdSeries> series_;
   std::vector<std::string> reaction_names_;
   std::vector<std::pair<Index, Index>> contact_columns_;  ///< body pairs with contact, in column order

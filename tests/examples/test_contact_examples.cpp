@@ -108,6 +108,21 @@ TEST(ContactExamples, PinchedTubeTouchesItselfAndBalances) {
               steps.at(last, "contact.tube.tube.force"), steps.at(last, "max_penetration"));
   // Penetration stays below half the wall (1.5 mm), where material depth would push the wrong way.
   EXPECT_LT(steps.at(last, "max_penetration"), 0.6);
+  // rigid_bodies.csv: the plates' reference points (the mean of their nodes at rest, near the
+  // plates' centres) follow the prescribed translation, unrotated.
+  const auto rigid = read_csv(run.output / "rigid_bodies.csv");
+  ASSERT_EQ(rigid.rows.size(), steps.rows.size());
+  const double upper_z = rigid.at(0, "upper_plate/plate.z") + 3.9 * rigid.at(0, "lambda");
+  const double upper_x = rigid.at(0, "upper_plate/plate.x");
+  EXPECT_NEAR(upper_z, 6.0, 0.1);
+  EXPECT_NEAR(upper_x, 6.0, 0.1);
+  for (std::size_t i = 0; i < rigid.rows.size(); ++i) {
+    const double lambda = rigid.at(i, "lambda");
+    EXPECT_EQ(rigid.at(i, "step"), steps.at(i, "step"));
+    EXPECT_NEAR(rigid.at(i, "upper_plate/plate.z"), upper_z - 3.9 * lambda, 1e-9) << "row " << i;
+    EXPECT_NEAR(rigid.at(i, "upper_plate/plate.x"), upper_x, 1e-9) << "row " << i;
+    EXPECT_EQ(rigid.at(i, "upper_plate/plate.angle_deg"), 0.0);
+  }
   constexpr double kRecordedUpperPlate = -12.9884;  // N
   EXPECT_NEAR(steps.at(last, "upper_plate/plate.fz"), kRecordedUpperPlate, 2e-3 * std::abs(kRecordedUpperPlate));
 }
