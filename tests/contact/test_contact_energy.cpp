@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -127,6 +128,49 @@ TEST(ContactEnergyCap, TooManyCandidatesMakeTheStateInvalidWithoutBuildingPairs)
               std::string::npos)
         << e.what();
   }
+}
+
+// Per-triangle and per-tet penalty factors: a pair uses the body pair's penalty times the smaller
+// factor. Scaling every factor by s scales the energy by s; scaling only one side's tets leaves
+// the pairs whose triangles keep factor 1 unchanged.
+TEST(ContactEnergyPenaltyScale, APairUsesTheSmallerFactor) {
+  const auto boxes = st::two_boxes(2, Vector3(0.62, 0.31, 0.17), 0.3, 7.0, /*self_contact=*/false);
+  ContactEnergy plain(boxes.geometry, {});
+  plain.update(boxes.x);
+  const double e0 = plain.value(boxes.x);
+  ASSERT_GT(e0, 0);
+
+  ContactGeometry all = boxes.geometry;
+  all.surface_penalty_scale = VectorX::Constant(all.surface.rows(), 3.0);
+  all.tet_penalty_scale = VectorX::Constant(all.tets.rows(), 3.0);
+  ContactEnergy tripled(all, {});
+  tripled.update(boxes.x);
+  EXPECT_NEAR(tripled.value(boxes.x), 3 * e0, 1e-12 * e0);
+
+  ContactGeometry one_side = boxes.geometry;  // stiff tets, triangles at 1: min is 1
+  one_side.tet_penalty_scale = VectorX::Constant(one_side.tets.rows(), 10.0);
+  ContactEnergy unchanged(one_side, {});
+  unchanged.update(boxes.x);
+  EXPECT_NEAR(unchanged.value(boxes.x), e0, 1e-12 * e0);
+  for (Index f = 0; f < one_side.surface.rows(); f += 7)
+    for (Index t = 0; t < one_side.tets.rows(); t += 5)
+      EXPECT_EQ(unchanged.pair_penalty(f, t), plain.pair_penalty(f, t));
+
+  // Body 0's triangles and tets stiff, body 1's soft: each pair takes the soft factor.
+  ContactGeometry mixed = boxes.geometry;
+  mixed.surface_penalty_scale = VectorX::Ones(mixed.surface.rows());
+  mixed.tet_penalty_scale = VectorX::Ones(mixed.tets.rows());
+  for (Index f = 0; f < mixed.surface.rows(); ++f)
+    if (mixed.surface_body[f] == 0) mixed.surface_penalty_scale[f] = 4;
+  for (Index t = 0; t < mixed.tets.rows(); ++t)
+    mixed.tet_penalty_scale[t] = mixed.tet_body[t] == 0 ? 4 : 0.5;
+  ContactEnergy energy(mixed, {});
+  for (Index f = 0; f < mixed.surface.rows(); f += 3)
+    for (Index t = 0; t < mixed.tets.rows(); t += 4) {
+      const double base = mixed.penalty(mixed.surface_body[f], mixed.tet_body[t]);
+      EXPECT_EQ(energy.pair_penalty(f, t),
+                base * std::min(mixed.surface_penalty_scale[f], mixed.tet_penalty_scale[t]));
+    }
 }
 
 }  // namespace

@@ -58,6 +58,23 @@ TEST(ContactInput, ValidGeometryIsAccepted) {
   EXPECT_THROW(ContactEnergy(g, {}), Error);
 }
 
+TEST(ContactInput, PenaltyScalesOfTheWrongSizeOrNotPositive) {
+  ContactGeometry g = valid();
+  g.tet_penalty_scale = VectorX::Ones(g.tets.rows() - 1);
+  EXPECT_THAT(input_error(g), AllOf(HasSubstr("tet penalty scale"), HasSubstr("entries")));
+  g = valid();
+  g.surface_penalty_scale = VectorX::Ones(g.surface.rows() + 2);
+  EXPECT_THAT(input_error(g), AllOf(HasSubstr("triangle penalty scale"), HasSubstr("entries")));
+  g = valid();
+  g.surface_penalty_scale = VectorX::Ones(g.surface.rows());
+  g.surface_penalty_scale[3] = 0;
+  EXPECT_THAT(input_error(g), AllOf(HasSubstr("penalty scale of triangle 3"), HasSubstr("> 0")));
+  g = valid();
+  g.tet_penalty_scale = VectorX::Ones(g.tets.rows());
+  g.tet_penalty_scale[5] = kNaN;
+  EXPECT_THAT(input_error(g), AllOf(HasSubstr("penalty scale of tet 5"), HasSubstr("finite")));
+}
+
 TEST(ContactInput, NegativePenalty) {
   ContactGeometry g = valid();
   g.penalty(0, 1) = g.penalty(1, 0) = -2.5;

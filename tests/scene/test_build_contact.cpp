@@ -93,6 +93,34 @@ TEST(BuildContact, PairsOverrideTheGlobalPenaltyAndCanSwitchContactOff) {
   EXPECT_EQ(setup.geometry.penalty(0, 1), 0.0);
 }
 
+TEST(BuildContact, RegionPenaltyScalesReachTheirTetsAndSurfaceTriangles) {
+  // Without a scale anywhere the arrays stay empty (every factor 1).
+  const ContactSetup plain = build(contact_scene());
+  EXPECT_EQ(plain.geometry.tet_penalty_scale.size(), 0);
+  EXPECT_EQ(plain.geometry.surface_penalty_scale.size(), 0);
+
+  json scene = contact_scene();
+  scene["bodies"][1]["regions"]["plate"]["contact_penalty_scale"] = 8.0;
+  const SceneConfig config = parse_scene(scene, "");
+  const fem::Problem problem = build_problem(config);
+  const ContactSetup setup = build_contact(config, problem);
+  const auto& g = setup.geometry;
+  ASSERT_EQ(g.tet_penalty_scale.size(), g.tets.rows());
+  ASSERT_EQ(g.surface_penalty_scale.size(), g.surface.rows());
+  for (Index t = 0; t < g.tets.rows(); ++t)
+    EXPECT_EQ(g.tet_penalty_scale[t], g.tet_body[t] == 1 ? 8.0 : 1.0) << "tet " << t;
+  for (Index f = 0; f < g.surface.rows(); ++f)
+    EXPECT_EQ(g.surface_penalty_scale[f], g.surface_body[f] == 1 ? 8.0 : 1.0) << "triangle " << f;
+
+  scene["bodies"][1]["regions"]["plate"]["contact_penalty_scale"] = 0.0;
+  try {
+    parse_scene(scene, "");
+    ADD_FAILURE() << "a zero penalty scale was accepted";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("contact_penalty_scale"));
+  }
+}
+
 TEST(BuildContact, DepthFromChosenFacesOnly) {
   json scene = contact_scene();
   scene["bodies"][0]["contact"] =

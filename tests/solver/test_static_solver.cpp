@@ -269,3 +269,101 @@ TEST(StaticSolver, FreeRigidBodyHangingFromASoftBlockCarriesItsWeight) {
     EXPECT_LT(gap, 1e-2 * std::abs(pose.t.z())) << "node " << a;
   }
 }
+
+namespace {
+
+/// Every node in a tilted double well along x, stiff springs in y and z (u = x - rest):
+/// E = sum_a k (u_x^4 / 4 - u_x^2 / 2) - f(lambda) u_x + k (u_y^2 + u_z^2) / 2 with
+/// f(lambda) = k (-0.6 + 1.2 lambda). The left well, where every node starts, disappears at
+/// f = 2 k / (3 sqrt 3) (lambda = 0.82): a limit point past which the only equilibrium is in
+/// the right well, 2.4 away. No step size, however small, crosses it continuously.
+class TiltedDoubleWell : public Energy {
+ public:
+  TiltedDoubleWell(Positions rest, double k) : rest_(std::move(rest)), k_(k) {}
+  std::string_view name() const override { return "tilted double well"; }
+  double tilt() const { return k_ * (-0.6 + 1.2 * lambda_); }
+  double value(const Positions& x) const override {
+    double e = 0;
+    for (Index a = 0; a < x.rows(); ++a) {
+      const Vector3 u = (x.row(a) - rest_.row(a)).transpose();
+      e += k_ * (std::pow(u.x(), 4) / 4 - u.x() * u.x() / 2) - tilt() * u.x() + k_ * (u.y() * u.y() + u.z() * u.z()) / 2;
+    }
+    return e;
+  }
+  void add_gradient(const Positions& x, NodalVectors& grad) const override {
+    for (Index a = 0; a < x.rows(); ++a) {
+      const Vector3 u = (x.row(a) - rest_.row(a)).transpose();
+      grad(a, 0) += k_ * (std::pow(u.x(), 3) - u.x()) - tilt();
+      grad(a, 1) += k_ * u.y();
+      grad(a, 2) += k_ * u.z();
+    }
+  }
+  void add_hessian(const Positions& x, BlockSparseMatrix& H) const override {
+    for (Index a = 0; a < x.rows(); ++a) {
+      const double ux = x(a, 0) - rest_(a, 0);
+      Matrix3 block = k_ * Matrix3::Identity();
+      block(0, 0) = k_ * (3 * ux * ux - 1);
+      H.add(H.find(a, a), block);
+    }
+  }
+  void hessian_pattern(std::vector<std::pair<Index, Index>>& pairs) const override {
+    for (Index a = 0; a < rest_.rows(); ++a) pairs.emplace_back(a, a);
+  }
+  void set_load_parameter(double lambda) override { lambda_ = lambda; }
+
+ private:
+  Positions rest_;
+  double k_;
+  double lambda_ = 0;
+};
+
+struct DoubleWellRig {
+  fem::Problem problem = st::box_problem(1, 1, 1, Vector3(0, 0, 0), Vector3(1, 1, 1), st::mooney_rivlin());
+  fem::DofMap dofs{problem};
+  TiltedDoubleWell well{problem.mesh.rest, 10.0};
+  solver::Objective objective{dofs, std::vector<Energy*>{&well}, problem.mesh.num_nodes()};
+};
+
+}  // namespace
+
+TEST(StaticSolver, SnapThroughBudgetCarriesTheSolutionPastALimitPoint) {
+  solver::StaticSolverOptions options;
+  options.stepping.increments = 10;
+  options.newton.max_iterations = 4;  // enough for every step but the snap
+  options.newton.residual_tolerance = 1e-10;
+  const solver::StaticSetup setup{.characteristic_length = 1.0, .reference_force = 1.0};
+
+  // Without the snap-through budget, halving never gets past the limit point.
+  {
+    DoubleWellRig rig;
+    solver::StaticSolverOptions off = options;
+    off.stepping.snap_through_after_cuts = 0;
+    const auto result = solver::solve_static(rig.objective, off, setup);
+    EXPECT_FALSE(result.success);
+    EXPECT_EQ(result.snap_throughs, 0);
+    EXPECT_NEAR(result.last_converged.lambda, 0.82, 0.02) << "stuck at the limit point";
+    EXPECT_NE(result.message.find("could not be solved"), std::string::npos) << result.message;
+  }
+  // With it (the default: after 2 failed attempts), the long attempt walks down into the right
+  // well and the stepping goes on.
+  DoubleWellRig rig;
+  std::vector<double> snap_lambdas;
+  solver::StaticCallbacks callbacks;
+  callbacks.on_step = [&](const solver::StepRecord& step, const fem::State&) {
+    if (step.snap_through) snap_lambdas.push_back(step.lambda);
+  };
+  const auto result = solver::solve_static(rig.objective, options, setup, callbacks);
+  ASSERT_TRUE(result.success) << result.message;
+  // Near the fold Newton also slows down, so a step just before it may use the long budget too.
+  ASSERT_GE(result.snap_throughs, 1);
+  EXPECT_EQ(static_cast<int>(snap_lambdas.size()), result.snap_throughs);
+  EXPECT_GT(snap_lambdas.back(), 0.82) << "the step across the limit point";
+  EXPECT_NE(result.message.find(" snap-through"), std::string::npos) << result.message;
+  // At lambda = 1 the tilt is 0.6 k: the single root of u^3 - u = 0.6, in the right well.
+  double root = 1.2;
+  for (int i = 0; i < 50; ++i) root -= (root * root * root - root - 0.6) / (3 * root * root - 1);
+  const Positions u = result.last_converged.x - rig.problem.mesh.rest;
+  EXPECT_NEAR(u.col(0).minCoeff(), root, 1e-8);
+  EXPECT_NEAR(u.col(0).maxCoeff(), root, 1e-8);
+  EXPECT_LT(u.rightCols(2).cwiseAbs().maxCoeff(), 1e-10);
+}

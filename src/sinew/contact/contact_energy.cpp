@@ -65,6 +65,18 @@ ContactEnergy::ContactEnergy(ContactGeometry geometry, ContactOptions options)
                                      i, j, e));
       if (e != g.penalty(j, i)) throw InputError("contact: the penalty matrix must be symmetric");
     }
+  auto check_scale = [](const VectorX& scale, Index expected, const char* what) {
+    if (scale.size() == 0) return;
+    if (scale.size() != expected)
+      throw InputError(fmt::format("contact: {} penalty scale has {} entries for {} {}s", what, scale.size(),
+                                   expected, what));
+    for (Index k = 0; k < scale.size(); ++k)
+      if (!std::isfinite(scale[k]) || scale[k] <= 0)
+        throw InputError(fmt::format("contact: the penalty scale of {} {} is {} (must be finite and > 0)", what, k,
+                                     scale[k]));
+  };
+  check_scale(g.surface_penalty_scale, g.surface.rows(), "triangle");
+  check_scale(g.tet_penalty_scale, g.tets.rows(), "tet");
   for (Index k = 0; k < g.surface_body.size(); ++k)
     if (g.surface_body[k] < 0 || g.surface_body[k] >= bodies)
       throw InputError(fmt::format("contact: surface triangle {} has body {} (there are {} bodies)", k,
@@ -163,7 +175,7 @@ void ContactEnergy::update(const Positions& x) {
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
       const auto [f, t] = candidates[k];
       if (!tet_has_depth_[static_cast<std::size_t>(t)]) continue;
-      const double penalty = geometry_.penalty(geometry_.surface_body[f], geometry_.tet_body[t]);
+      const double penalty = pair_penalty(f, t);
       if (penalty == 0) continue;
       ActivePair& p = item.pair;
       p.triangle = f;

@@ -16,6 +16,7 @@
 /// Units: lengths L, depths L, penalties ε in force / L³ (stress per length: a penetration g
 /// meets a pressure of about ε g), energy in force × L.
 
+#include <algorithm>
 #include <cstdint>
 #include <unordered_set>
 #include <utility>
@@ -41,6 +42,12 @@ struct ContactGeometry {
   IndexVector tet_body;       ///< #T: body of each tet
   VectorX depth;              ///< #V: material depth per node (L), >= 0
   MatrixX penalty;            ///< #B x #B symmetric: ε per pair of bodies (force / L³); 0 = off
+  /// Optional factors on the pair penalty, per surface triangle (#F) and per tet (#T), > 0;
+  /// empty means 1. A (triangle, tet) pair uses penalty(bodies) x min(triangle's, tet's): the
+  /// softer part governs, so e.g. two rigid parts can meet stiffly while soft tissue against
+  /// either keeps the body pair's penalty.
+  VectorX surface_penalty_scale;
+  VectorX tet_penalty_scale;
 };
 
 struct ContactOptions {
@@ -103,6 +110,17 @@ class ContactEnergy final : public Energy {
   const CollisionTimes& last_update_times() const { return times_; }
   const ContactOptions& options() const { return options_; }
   Index num_bodies() const { return static_cast<Index>(geometry_.penalty.rows()); }
+  /// ε of surface triangle f against tet t: the body pair's penalty times the smaller of the
+  /// two penalty scales (force / L³).
+  double pair_penalty(Index f, Index t) const {
+    double e = geometry_.penalty(geometry_.surface_body[f], geometry_.tet_body[t]);
+    if (geometry_.surface_penalty_scale.size() > 0 || geometry_.tet_penalty_scale.size() > 0) {
+      const double sf = geometry_.surface_penalty_scale.size() > 0 ? geometry_.surface_penalty_scale[f] : 1.0;
+      const double st = geometry_.tet_penalty_scale.size() > 0 ? geometry_.tet_penalty_scale[t] : 1.0;
+      e *= std::min(sf, st);
+    }
+    return e;
+  }
 
  private:
   struct ActivePair {

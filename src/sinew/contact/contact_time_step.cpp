@@ -16,7 +16,10 @@ ContactTimeStep contact_critical_time_step(const ContactGeometry& geometry, cons
     const Vector3 a = rest.row(geometry.surface(f, 0)), b = rest.row(geometry.surface(f, 1)),
                   c = rest.row(geometry.surface(f, 2));
     const double third = 0.5 * (b - a).cross(c - a).norm() / 3;
-    const double eps = geometry.penalty.row(geometry.surface_body[f]).maxCoeff();
+    // The largest penalty this triangle can meet (the pair scale is the min of two factors,
+    // at most the triangle's own).
+    const double eps = geometry.penalty.row(geometry.surface_body[f]).maxCoeff() *
+                       (geometry.surface_penalty_scale.size() > 0 ? geometry.surface_penalty_scale[f] : 1.0);
     for (int k = 0; k < 3; ++k) {
       const Index v = geometry.surface(f, k);
       area[v] += third;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -265,6 +266,28 @@ ContactSetup build_contact(const SceneConfig& scene, const fem::Problem& problem
 
   Index total = 0;
   for (const auto& s : surfaces) total += static_cast<Index>(s.rows());
+  // Per-region penalty factors: on every tet of the region and on the surface triangles whose
+  // tet is in the region. Left empty (all 1) when no region sets one.
+  VectorX region_scale = VectorX::Ones(static_cast<Index>(mesh.region_names.size()));
+  for (Index b = 0; b < bodies; ++b) {
+    const fem::BodyRange& body = problem.bodies[static_cast<std::size_t>(b)];
+    for (const auto& [name, region] : scene.bodies[static_cast<std::size_t>(b)].regions) {
+      const auto it = std::find(mesh.region_names.begin(), mesh.region_names.end(), body.name + "/" + name);
+      if (it != mesh.region_names.end()) region_scale[it - mesh.region_names.begin()] = region.contact_penalty_scale;
+    }
+  }
+  const bool scaled = (region_scale.array() != 1.0).any();
+  std::map<std::array<Index, 3>, Index> face_region;  // boundary face -> region of its tet
+  if (scaled) {
+    g.tet_penalty_scale.resize(mesh.num_tets());
+    for (Index t = 0; t < mesh.num_tets(); ++t) {
+      g.tet_penalty_scale[t] = region_scale[mesh.region[t]];
+      const auto v = mesh.tets.row(t);
+      static constexpr int kFaces[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
+      for (const auto& face : kFaces) face_region[sorted_face(v[face[0]], v[face[1]], v[face[2]])] = mesh.region[t];
+    }
+    g.surface_penalty_scale.resize(total);
+  }
   g.surface.resize(total, 3);
   g.surface_body.resize(total);
   Index row = 0;
@@ -272,6 +295,9 @@ ContactSetup build_contact(const SceneConfig& scene, const fem::Problem& problem
     const auto& s = surfaces[static_cast<std::size_t>(b)];
     g.surface.middleRows(row, s.rows()) = s;
     g.surface_body.segment(row, s.rows()).setConstant(b);
+    if (scaled)
+      for (Index f = 0; f < s.rows(); ++f)
+        g.surface_penalty_scale[row + f] = region_scale[face_region.at(sorted_face(s(f, 0), s(f, 1), s(f, 2)))];
     row += static_cast<Index>(s.rows());
   }
 

@@ -253,6 +253,7 @@ class SceneReader {
   RegionConfig read_region(const json& j, const std::string& path, const SceneConfig& config) {
     RegionConfig region;
     region.density = j.at("density").get<double>();
+    region.contact_penalty_scale = j.at("contact_penalty_scale").get<double>();
     if (j.contains("fiber_direction")) region.fiber_direction = to_vector3(j.at("fiber_direction"));
     const bool has_material = j.contains("material");
     const bool has_rigid = j.contains("rigid");
@@ -506,6 +507,8 @@ class SceneReader {
     options.stepping.min_step = j.at("min_step").get<double>();
     options.stepping.growth = j.at("growth").get<double>();
     options.stepping.easy_iterations = j.at("easy_iterations").get<int>();
+    options.stepping.snap_through_after_cuts = j.at("snap_through_after_cuts").get<int>();
+    options.stepping.snap_through_iterations = j.at("snap_through_iterations").get<int>();
     const json& newton = j.at("newton");
     options.newton.max_iterations = newton.at("max_iterations").get<int>();
     options.newton.residual_tolerance = newton.at("residual_tolerance").get<double>();

@@ -35,6 +35,9 @@ struct RegionConfig {
   fem::RigidMotion rigid_motion;          ///< when rigid_kind == Prescribed
   double density = 0;                      ///< mass per volume
   std::optional<Vector3> fiber_direction;  ///< overrides the material's fiber direction
+  /// Factor on the contact penalty of this region's surface and tets; a pair of parts uses the
+  /// smaller of their two factors (see contact::ContactGeometry).
+  double contact_penalty_scale = 1;
 };
 
 /// Chooses nodes of one body.

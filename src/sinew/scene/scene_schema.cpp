@@ -378,6 +378,12 @@ SchemaNode body_schema() {
                              .min(0)
                              .fallback(region_defaults.density),
                          vec3("fiber_direction", "overrides the material's fiber direction in this region").nonzero(),
+                         number("contact_penalty_scale",
+                                "factor on the contact penalty where this region's surface or tets take part; two "
+                                "parts in contact use the smaller of their factors, so stiff parts (e.g. two rigid "
+                                "bones) can meet with a stiffer penalty than soft tissue against either")
+                             .above(0)
+                             .fallback(region_defaults.contact_penalty_scale),
                      }))
               .required()
               .items(1),
@@ -517,6 +523,12 @@ SchemaNode solver_schema() {
                  integer("easy_iterations", "Newton iterations at or below which a step counts as easy")
                      .min(0)
                      .fallback(stepping.easy_iterations),
+                 integer("snap_through_after_cuts", "after this many failed attempts in a row, the next attempt gets snap_through_iterations Newton iterations (passes limit points: a buckle or a fold snapping through, where no smaller step helps); 0 = off")
+                     .min(0)
+                     .fallback(stepping.snap_through_after_cuts),
+                 integer("snap_through_iterations", "Newton iterations of that attempt")
+                     .min(1)
+                     .fallback(stepping.snap_through_iterations),
                  object("newton", "Newton iterations of one load step",
                         {
                             integer("max_iterations", "iterations before the step fails and is halved")

@@ -124,6 +124,9 @@ DynamicResult solve_implicit(Objective& objective, const DynamicTerms& terms, co
   }
   result.success = result.message.empty();
   result.time = t;
+  if (result.success)
+    result.message = fmt::format("solved: t = {:.6g} in {} time steps, {} Newton iterations, {} cuts", t,
+                                 result.steps, result.newton_iterations, result.cuts);
   result.last_state = std::move(current);
   result.last_velocity = std::move(velocity);
   if (result.steps == 0) result.min_step = 0;
@@ -255,6 +258,7 @@ DynamicResult solve_explicit(Objective& objective, const DynamicTerms& terms, co
   }
   result.success = result.message.empty();
   result.time = t;
+  if (result.success) result.message = fmt::format("solved: t = {:.6g} in {} explicit steps", t, result.steps);
   result.last_state = std::move(current);
   result.last_velocity = nodal_velocity(result.last_state, vq);
   return result;

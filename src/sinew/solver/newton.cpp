@@ -48,15 +48,20 @@ struct Direction {
   double regularization = 0;
 };
 
+/// Smallest relative diagonal shift tried; below it a shift is no shift.
+constexpr double kSmallestShift = 1e-8;
+
 /// Solves K dq = -g; when K is not positive definite or the result is not a descent direction,
-/// retries with K + shift * diag(K), shift growing tenfold from 1e-8.
+/// retries with K + shift * diag(K), shift growing tenfold from `first_shift` (0: unshifted
+/// first, then kSmallestShift). Every failed try costs a factorization, so the caller passes a
+/// hint from the previous iteration when that one needed a shift.
 Direction newton_direction(const fem::SparseMatrix& K, bool fresh_pattern, const VectorX& g, LinearSolver& linear,
-                           PhaseTimes& times) {
+                           PhaseTimes& times, double first_shift) {
   Stopwatch watch(times.linear_solve);
   Direction d;
   if (fresh_pattern) linear.analyze(K);
   const VectorX diag = K.diagonal().cwiseAbs().cwiseMax(1e-300);
-  double shift = 0;
+  double shift = first_shift >= kSmallestShift ? first_shift : 0;
   fem::SparseMatrix shifted;
   for (int attempt = 0; attempt < 12; ++attempt) {
     const fem::SparseMatrix* M = &K;
@@ -75,7 +80,7 @@ Direction newton_direction(const fem::SparseMatrix& K, bool fresh_pattern, const
         return d;
       }
     }
-    shift = shift == 0 ? 1e-8 : shift * 10;
+    shift = shift == 0 ? kSmallestShift : shift * 10;
   }
   // Last resort: diagonally scaled steepest descent.
   d.dq = -g.cwiseQuotient(diag);
@@ -102,6 +107,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
                           PhaseTimes& times) {
   const fem::DofMap& dofs = objective.dofs();
   NewtonResult result;
+  double shift_hint = 0;  // relative diagonal shift to try first (see newton_direction)
   double energy;
   {
     PhaseTimer watch(times.line_search, objective);
@@ -153,7 +159,10 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
       PhaseTimer watch(times.forces_and_stiffness, objective);
       fresh = objective.hessian(state, full_g, context.node_viscosity, K);
     }
-    const Direction direction = newton_direction(K, fresh, g, linear, times);
+    const Direction direction = newton_direction(K, fresh, g, linear, times, shift_hint);
+    // An indefinite tangent usually stays indefinite for a few iterations: start the next
+    // search a hundredfold below the shift that worked instead of from zero.
+    shift_hint = std::isfinite(direction.regularization) ? direction.regularization / 100 : 0;
     const double slope = g.dot(direction.dq);
 
     // Line search: halve until legal and decreasing.

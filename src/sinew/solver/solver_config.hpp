@@ -37,6 +37,13 @@ struct LoadSteppingOptions {
   double min_step = 1e-4;       ///< smallest load-parameter step, as a fraction of an increment
   double growth = 2.0;          ///< step growth after an easy step
   int easy_iterations = 4;      ///< Newton iterations at or below which a step counts as easy
+  /// Snap-through: after this many failed attempts in a row the next attempt gets
+  /// `snap_through_iterations` Newton iterations. Past a limit point (a buckle, a fold that
+  /// snaps) no nearby equilibrium exists however small the step; Newton with the energy line
+  /// search is a descent method and walks to the equilibrium on the new branch if allowed to.
+  /// 0 disables it.
+  int snap_through_after_cuts = 2;
+  int snap_through_iterations = 200;  ///< Newton budget of that attempt
   /// Tangent (default): dq = -K^-1 dg/dlambda dlambda from the last factorization, measured to
   /// need 25-35 % fewer Newton iterations than the seed's two-point extrapolation on the examples.
   Predictor predictor = Predictor::Tangent;

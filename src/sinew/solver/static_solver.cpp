@@ -91,6 +91,7 @@ StaticResult solve_load_steps(Objective& objective, const StaticSolverOptions& o
   double step = increment_size;
   fem::State previous;
   bool has_previous = false;
+  int failures_in_a_row = 0;  // attempts failed since the last converged step
 
   for (int k = 1; k <= increments; ++k) {
     const double target = (k == increments) ? 1.0 : k * increment_size;
@@ -122,9 +123,17 @@ StaticResult solve_load_steps(Objective& objective, const StaticSolverOptions& o
         dofs.sync(trial, lambda_new);
       }
 
-      const NewtonResult newton = newton_solve(objective, trial, options.newton, *linear, K, context, result.times);
+      NewtonOptions newton_options = options.newton;
+      const bool snap_attempt = stepping.snap_through_after_cuts > 0 &&
+                                failures_in_a_row == stepping.snap_through_after_cuts;
+      attempt.snap_through = snap_attempt;
+      if (snap_attempt)
+        newton_options.max_iterations = std::max(newton_options.max_iterations, stepping.snap_through_iterations);
+      const NewtonResult newton = newton_solve(objective, trial, newton_options, *linear, K, context, result.times);
       result.newton_iterations += newton.iterations;
       if (newton.converged) {
+        failures_in_a_row = 0;
+        if (snap_attempt) ++result.snap_throughs;
         previous = std::move(current);
         has_previous = true;
         current = std::move(trial);
@@ -139,6 +148,7 @@ StaticResult solve_load_steps(Objective& objective, const StaticSolverOptions& o
         continue;
       }
       ++result.cuts;
+      ++failures_in_a_row;
       attempt.cuts = result.cuts;
       if (callbacks.on_cut) callbacks.on_cut(attempt, newton.failure);
       step = delta / 2;
@@ -157,8 +167,12 @@ StaticResult solve_load_steps(Objective& objective, const StaticSolverOptions& o
     if (callbacks.on_increment) callbacks.on_increment(k, current);
   }
   result.success = true;
-  result.message = fmt::format("solved: {} increments, {} steps, {} Newton iterations, {} step cuts", increments,
-                               result.steps, result.newton_iterations, result.cuts);
+  result.message = fmt::format("solved: {} increments, {} steps, {} Newton iterations, {} step cuts{}", increments,
+                               result.steps, result.newton_iterations, result.cuts,
+                               result.snap_throughs > 0
+                                   ? fmt::format(", {} snap-through{}", result.snap_throughs,
+                                                 result.snap_throughs == 1 ? "" : "s")
+                                   : "");
   return result;
 }
 

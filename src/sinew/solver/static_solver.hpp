@@ -23,6 +23,7 @@ struct StepRecord {
   double force_scale = 0;
   double energy = 0;
   int cuts = 0;             ///< step halvings so far (whole run)
+  bool snap_through = false;  ///< attempted with the snap-through Newton budget
 };
 
 struct StaticCallbacks {
@@ -50,6 +51,7 @@ struct StaticResult {
   int steps = 0;
   int newton_iterations = 0;
   int cuts = 0;
+  int snap_throughs = 0;  ///< steps solved with the snap-through budget (LoadSteppingOptions)
   PhaseTimes times;
 };
 
