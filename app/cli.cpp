@@ -18,6 +18,19 @@
 
 namespace sinew::app {
 
+namespace {
+
+/// The scene with every generated mesh's element size set to `size` (0: unchanged). Bodies
+/// read from files keep their meshes.
+scene::SceneConfig with_element_size(scene::SceneConfig config, double size) {
+  if (size > 0)
+    for (auto& body : config.bodies)
+      if (body.mesh.file.empty()) body.mesh.generate.element_size = size;
+  return config;
+}
+
+}  // namespace
+
 int run_cli(int argc, char** argv) {
   CLI::App cli{"sinew: implicit finite elements for elastic solids in contact"};
   cli.require_subcommand(1);
@@ -34,10 +47,15 @@ int run_cli(int argc, char** argv) {
   run->add_option("scene", scene_path, "scene file (JSON)")->required();
   run->add_option("-o,--output", run_options.output_directory, "output directory")->capture_default_str();
   run->add_flag("--no-progress", no_progress, "never draw the progress bar");
+  double element_size = 0;
+  const std::string element_size_help =
+      "override the element_size of every generated mesh (length): the same scene coarser or finer";
+  run->add_option("--element-size", element_size, element_size_help)->check(CLI::PositiveNumber);
 
   auto* validate = cli.add_subcommand("validate", "check a scene (schema, meshes, constraints) without solving");
   std::string validate_path;
   validate->add_option("scene", validate_path, "scene file (JSON)")->required();
+  validate->add_option("--element-size", element_size, element_size_help)->check(CLI::PositiveNumber);
 
   auto* schema = cli.add_subcommand("schema", "print the scene format");
   bool markdown = false, json = false;
@@ -101,7 +119,7 @@ int run_cli(int argc, char** argv) {
       return 0;
     }
     if (*validate) {
-      const auto config = scene::load_scene_file(validate_path);
+      const auto config = with_element_size(scene::load_scene_file(validate_path), element_size);
       const fem::Problem problem = scene::build_problem(config);
       // The same model a run builds: contact (depths, penalties) and dynamics (masses, time
       // steps) are checked too.
@@ -139,7 +157,7 @@ int run_cli(int argc, char** argv) {
     }
     run_options.progress_bar = !no_progress;
     run_options.log_steps = !quiet;
-    const auto config = scene::load_scene_file(scene_path);
+    const auto config = with_element_size(scene::load_scene_file(scene_path), element_size);
     const RunReport report = run_scene(config, run_options);
     if (!report.success) {
       logger().error("{}", report.message);

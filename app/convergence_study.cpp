@@ -39,10 +39,21 @@ scene::SceneConfig with_contact(scene::SceneConfig scene, contact::ContactMethod
 /// pair the scene has contact on (the penetration figures do not depend on the penalty).
 contact::ContactEnergy measuring_contact(const scene::SceneConfig& scene, const fem::Problem& problem) {
   scene::SceneConfig unit = with_contact(scene, contact::ContactMethod::Area, 1.0);
-  unit.contact.enabled = true;
   scene::ContactSetup setup = scene::build_contact(unit, problem);
   return contact::ContactEnergy(std::move(setup.geometry), contact::ContactOptions{});
 }
+
+/// Lowers the log level to warnings for its lifetime and restores it, also when a run throws.
+class QuietLog {
+ public:
+  QuietLog() : level_(logger().level()) { logger().set_level(spdlog::level::warn); }
+  ~QuietLog() { logger().set_level(level_); }
+  QuietLog(const QuietLog&) = delete;
+  QuietLog& operator=(const QuietLog&) = delete;
+
+ private:
+  spdlog::level::level_enum level_;
+};
 
 std::string penalty_label(double penalty) { return fmt::format("{:g}", penalty); }
 
@@ -164,16 +175,11 @@ ConvergenceStudyReport run_convergence_study(const scene::SceneConfig& scene, co
         run.largest_residual = std::max(run.largest_residual, it.equilibrium_residual);
         run.final_residual = it.equilibrium_residual;
       };
-      const auto level = logger().level();
-      logger().set_level(spdlog::level::warn);
       RunReport result;
-      try {
+      {
+        const QuietLog quiet;  // the study prints its own table
         result = run_scene(config, options);
-      } catch (...) {
-        logger().set_level(level);
-        throw;
       }
-      logger().set_level(level);
       residuals.flush();
       run.solved = result.success;
       run.message = result.message;

@@ -231,11 +231,12 @@ void RunOutput::finish_summary(nlohmann::json& j, double wall_seconds, const sol
   j["tets"] = problem_.mesh.num_tets();
   j["dofs"] = model_.dofs->num_dofs();
   j["wall_seconds"] = wall_seconds;
-  j["seconds"] = {{"forces_and_stiffness", times.forces_and_stiffness},
+  j["seconds"] = {{"setup", setup_seconds_},
+                  {"forces_and_stiffness", times.forces_and_stiffness},
                   {"collision", times.collision},
                   {"linear_solve", times.linear_solve},
                   {"line_search", times.line_search},
-                  {"other", std::max(0.0, wall_seconds - times.total())}};
+                  {"other", std::max(0.0, wall_seconds - setup_seconds_ - times.total())}};
   io::write_file_atomically(directory_ + "/summary.json", j.dump(2) + "\n");
 }
 
@@ -249,6 +250,7 @@ void RunOutput::write_summary(const solver::StaticResult& result, double wall_se
   j["steps"] = result.steps;
   j["newton_iterations"] = result.newton_iterations;
   j["step_cuts"] = result.cuts;
+  j["snap_throughs"] = result.snap_throughs;
   finish_summary(j, wall_seconds, result.times);
 }
 

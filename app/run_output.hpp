@@ -62,6 +62,9 @@ class RunOutput {
   void write_summary(const solver::StaticResult& result, double wall_seconds, const std::string& scene_name);
 
   const std::string& directory() const { return directory_; }
+  /// Seconds spent before solving (meshing, material depth, model set-up): the "setup" phase
+  /// of summary.json, taken out of "other".
+  void set_setup_seconds(double seconds) { setup_seconds_ = seconds; }
 
  private:
   io::VtuData vtu_data(const fem::State& state) const;
@@ -78,6 +81,7 @@ class RunOutput {
   /// (vector, radians; angle, degrees).
   void write_rigid_row(std::vector<io::CsvTable::Cell> row, const fem::State& state, bool flush);
   std::string directory_;
+  double setup_seconds_ = 0;
   const fem::Problem& problem_;
   const StaticModel& model_;
   scene::OutputConfig config_;

@@ -24,6 +24,7 @@ struct RunReport {
   bool success = false;
   std::string message;
   double wall_seconds = 0;
+  double setup_seconds = 0;  ///< of wall_seconds: meshing, material depth, model set-up
   solver::StaticResult result;         ///< static analyses
   solver::DynamicResult dynamic_result;  ///< dynamic analyses
 };

@@ -10,13 +10,10 @@
 
 #include <benchmark/benchmark.h>
 
-#include <chrono>
-#include <filesystem>
 #include <string>
-#include <unistd.h>
+#include <vector>
 
-#include "run_scene.hpp"
-#include "sinew/core/log.hpp"
+#include "bench_run_support.hpp"
 #include "sinew/scene/load_scene.hpp"
 
 using namespace sinew;
@@ -40,33 +37,15 @@ scene::SceneConfig falling_rods(bool reduced) {
 
 void BM_FallingRods(benchmark::State& state, bool reduced) {
   const scene::SceneConfig config = falling_rods(reduced);
-  const std::filesystem::path output =
-      std::filesystem::temp_directory_path() / ("sinew_bench_falling_rods_" + std::to_string(::getpid()));
-  logger().set_level(spdlog::level::warn);
   for (auto _ : state) {
-    std::filesystem::remove_all(output);
-    app::RunOptions options;
-    options.output_directory = output.string();
-    options.progress_bar = false;
-    options.log_steps = false;
-    const app::RunReport report = app::run_scene(config, options);
-    state.SetIterationTime(report.wall_seconds);
-    if (!report.success) state.SkipWithError(report.message.c_str());
+    const app::RunReport report = bench::run_once(state, config, "falling_rods");
     const auto& r = report.dynamic_result;
-    const auto& t = r.times;
-    const double wall = std::max(report.wall_seconds, 1e-12);
     state.counters["simulated_s"] = r.time;
     state.counters["steps"] = r.steps;
     state.counters["newton_its"] = r.newton_iterations;
     state.counters["cuts"] = r.cuts;
-    state.counters["wall_s"] = report.wall_seconds;
-    state.counters["forces_stiffness_%"] = 100 * t.forces_and_stiffness / wall;
-    state.counters["collision_%"] = 100 * t.collision / wall;
-    state.counters["linear_solve_%"] = 100 * t.linear_solve / wall;
-    state.counters["line_search_%"] = 100 * t.line_search / wall;
-    state.counters["other_%"] = 100 * std::max(0.0, wall - t.total()) / wall;
+    bench::set_phase_counters(state, report, r.times);
   }
-  std::filesystem::remove_all(output);
 }
 
 BENCHMARK_CAPTURE(BM_FallingRods, reduced, true)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);

@@ -4,31 +4,46 @@ section 6) on a generated right leg, built from the product's own shape generato
 
 Usage: /usr/bin/python3 scripts/make_knee.py [--element-size H] [--increments N] [--out PATH]
 
-Coordinates in mm, the knee joint's centre at the origin: z up the leg, x to the front
-(anterior), y across (the flexion axis). Stresses in kPa (the seed's Table 2 constants read as
-kPa), so forces come out in mN.
+Coordinates in mm, the flexion axis is the y axis (through the centres of the condyles): z up the
+leg, x to the front (anterior), y across. Stresses in kPa (the seed's Table 2 constants read as
+kPa), so forces come out in mN. Proportions of an adult leg: radius 60, thigh and shank modelled
+200 mm above and below the joint.
 
 Parts (one deformable body "leg" holding everything bonded together, and the rigid femur):
-  femur      rigid, fixed: shaft (radius 14) and a bicondylar roller (two spheres of radius 22
-             joined by a cylinder along y) under a short neck; body "femur"
-  tibia      rigid, prescribed: plateau (radius 30, 2 mm below the condyles), shaft, tibial
-             tuberosity; rotated 150 degrees about the y axis through the condyles' centre
-  patella    rigid, free (6 DOF): a lens in front of the condyles
+  femur      rigid, fixed (body "femur"): two spherical condyles (radius 22) about the flexion
+             axis with the trochlear groove between them, and the shaft in front of the axis
+             (the condyles bulge behind it, so the tibia can turn 150 degrees without the rigid
+             bones meeting)
+  tibia      rigid, prescribed: plateau (radius 24, 2 mm below the condyles), shaft, tibial
+             tuberosity; turned 150 degrees about the flexion axis in 3-degree increments
+  patella    rigid, free (6 DOF): a ball in front of the groove, held only by its tendons
   ligament   patellar ligament (tendon, Table 2 blue) from the patella to the tuberosity
   tendon     quadriceps tendon (blue) above the patella, then the graded intermediate tissues
-  graded_2   (magenta) and graded_1 (green), then the quadriceps muscle (yellow), rounded, in
-  muscle     front of the femur with a 4 mm gap
-  skin       skin-fat layer (Mooney-Rivlin C1 = 5, C2 = 1, a = 50): a 10 mm tube around the
-             thigh and knee that fills the lower leg solid and is bonded there to the tibia
-The thigh's upper cross-section (muscle and skin at z = 250) moves only in its plane.
-Contact: the femur against the leg, and the leg against itself (skin folds, skin on muscle
-and patella, patella on ...); bonded parts share nodes and carry no contact between them.
+  graded_2   (magenta) and graded_1 (green), then the quadriceps muscle (yellow), in front of
+  graded_1   the femur and rounded to the leg's cross-section
+  muscle
+  skin       skin-fat (Mooney-Rivlin C1 = 5, C2 = 1, a = 50): the leg's cylinder minus a hull
+             4 mm around the femur, the quadriceps group, the patella and the ligament (the
+             seed's "shrink wrap"): 10 mm over the muscles, solid behind the femur and around
+             the tibia, to which it is bonded
+The thigh's upper cross-section (muscle and skin-fat at z = 200) moves only in its plane.
+Contact: the femur against the leg (patella on the trochlea and condyles, muscle and skin-fat on
+the bone) and the leg against itself (skin-fat on the muscle, tendons and patella, and folding
+onto itself behind the knee); bonded parts share nodes and carry no contact between them.
 """
 import argparse
 import json
 import pathlib
 
-THIGH, SHANK = 250.0, 250.0
+THIGH, SHANK = 200.0, 200.0  # lengths of the modelled thigh and shank above and below the joint (mm)
+LEG_RADIUS = 60.0            # the skin's outer radius (mm)
+SKIN = 10.0                  # the skin-fat layer's thickness over the muscles (mm)
+FEMUR_PENALTY = 2000.0       # contact penalty femur / leg (kPa per mm of depth)
+LEG_PENALTY = 300.0          # contact penalty of the leg on itself (kPa per mm of depth)
+STIFF_SCALE = 5.0            # penalty factor of the bones and tendons: where two of them meet
+                             # (patella on femur, tendon on femur) the penalty is 5x the pair's
+GAP = 4.0                    # sliding gap between the skin-fat and the parts it is not bonded to (mm)
+E = 16.0                     # the tibia's and the leg's axis lie this far in front of the flexion axis
 
 
 def cyl(base, axis, radius):
@@ -43,28 +58,45 @@ def sphere(center, radius):
     return {"sphere": {"center": center, "radius": radius}}
 
 
-def femur():
+def femur(grow=0.0):
+    """Two spherical condyles about the flexion axis with the trochlear groove between them (the
+    patella's track, from the front round to the back), and the shaft: narrow and flush with the
+    groove's floor where it meets the condyles, wider above them. `grow` thickens every piece (the
+    hull the skin-fat keeps its distance from)."""
     return {"union": [
-        cyl([0, 0, 20], [0, 0, THIGH - 20], 14),      # shaft
-        cyl([0, 0, 0], [0, 0, 40], 18),               # neck above the condyles
-        cyl([0, -21, 0], [0, 42, 0], 19),             # the groove between the condyles
-        sphere([0, -21, 0], 22), sphere([0, 21, 0], 22)]}  # the condyles
+        sphere([0, -21, 0], 22 + grow), sphere([0, 21, 0], 22 + grow),   # condyles
+        cyl([0, -21, 0], [0, 42, 0], 19 + grow),                          # trochlear groove's floor
+        cyl([8.5, 0, 0], [0, 0, THIGH], 10 + grow),                       # shaft at the condyles
+        cyl([4, 0, 50], [0, 0, THIGH - 50], 13 + grow)]}                  # shaft above them
 
 
 def tibia():
     return {"union": [
-        cyl([0, 0, -40], [0, 0, 16], 30),             # plateau, top 2 mm below the condyles
-        cyl([0, 0, -SHANK], [0, 0, SHANK - 36], 15),  # shaft
-        box([12, -10, -75], [38, 10, -50])]}          # tibial tuberosity
+        cyl([E, 0, -40], [0, 0, 16], 24),                # plateau, 2 mm below the condyles
+        cyl([E, 0, -SHANK], [0, 0, SHANK - 36], 14),     # shaft
+        box([26, -10, -70], [46, 10, -48])]}             # tibial tuberosity
 
 
 def patella():
-    return {"intersection": [box([30, -20, 5], [44, 20, 45]), sphere([34, 0, 25], 22)]}
+    """A ball in front of the groove: no sharp rim to dig into the femur."""
+    return sphere([37, 0, 18], 14)
 
 
 def rounded(lo, hi, radius):
-    """A box in front of the femur, cut by the cylinder of `radius` about the leg's axis."""
-    return {"intersection": [box(lo, hi), cyl([0, 0, lo[2] - 1], [0, 0, hi[2] - lo[2] + 2], radius)]}
+    """A box cut by the cylinder of `radius` about the leg's axis."""
+    return {"intersection": [box(lo, hi), cyl([E, 0, lo[2] - 1], [0, 0, hi[2] - lo[2] + 2], radius)]}
+
+
+def skin_fat():
+    """The leg's cylinder minus a hull around the femur, the quadriceps and its tendons, the
+    patella and the patellar ligament, GAP away from them (the seed's "shrink wrap" hull): solid
+    skin-fat behind the femur and around the tibia, to which it is bonded."""
+    inner = LEG_RADIUS - SKIN
+    hull = {"union": [
+        femur(GAP),
+        rounded([18, -36, 0], [E + inner + 1, 36, THIGH + 2], inner),   # quadriceps and tendons
+        box([18, -22, -68], [54, 22, 0])]}                                # patella and ligament
+    return {"difference": [cyl([E, 0, -SHANK], [0, 0, THIGH + SHANK], LEG_RADIUS), hull]}
 
 
 def scene(element_size, increments):
@@ -72,14 +104,12 @@ def scene(element_size, increments):
     leg_parts = [
         {"region": "tibia", "shape": tibia()},
         {"region": "patella", "shape": patella()},
-        {"region": "ligament", "shape": box([33, -10, -62], [41, 10, 10])},
-        {"region": "tendon", "shape": box([30, -16, 40], [42, 16, 80])},
-        {"region": "graded_2", "shape": rounded([26, -22, 80], [47, 22, 100], 56)},
-        {"region": "graded_1", "shape": rounded([22, -28, 100], [52, 28, 120], 56)},
-        {"region": "muscle", "shape": rounded([18, -34, 120], [56, 34, THIGH], 56)},
-        {"region": "skin", "shape": {"difference": [
-            cyl([0, 0, -SHANK], [0, 0, THIGH + SHANK], 70),
-            cyl([0, 0, -70], [0, 0, THIGH + 71], 60)]}},
+        {"region": "ligament", "shape": box([42, -9, -64], [50, 9, 14])},
+        {"region": "tendon", "shape": box([30, -14, 26], [44, 14, 75])},
+        {"region": "graded_2", "shape": rounded([35, -20, 75], [54, 20, 95], LEG_RADIUS - SKIN - GAP)},
+        {"region": "graded_1", "shape": rounded([33, -26, 95], [58, 26, 115], LEG_RADIUS - SKIN - GAP)},
+        {"region": "muscle", "shape": rounded([33, -32, 115], [E + 60, 32, THIGH], LEG_RADIUS - SKIN - GAP)},
+        {"region": "skin", "shape": skin_fat()},
     ]
     return {
         "name": "knee-flexion",
@@ -87,7 +117,7 @@ def scene(element_size, increments):
                        "(scripts/make_knee.py): rigid femur fixed, rigid tibia turned 150 degrees about the "
                        "transverse axis through the condyles in 3-degree increments, rigid patella free, pulled "
                        "over the condyles by the patellar ligament; quadriceps muscle, graded tissues and tendons of "
-                       "Table 2; a skin-fat layer bonded to the lower leg that folds behind the knee. Frictionless "
+                       "Table 2; skin-fat filling the leg around them, bonded to the tibia, folding behind the knee. Frictionless "
                        "material-depth contact between every pair of parts and self-contact of the skin.",
         "units": "mm, mN, kPa",
         "materials": {
@@ -100,15 +130,15 @@ def scene(element_size, increments):
         "bodies": [
             {"name": "femur",
              "mesh": {"generate": {"element_size": element_size, "parts": [{"region": "femur", "shape": femur()}]}},
-             "regions": {"femur": {"rigid": "fixed"}}},
+             "regions": {"femur": {"rigid": "fixed", "contact_penalty_scale": STIFF_SCALE}}},
             {"name": "leg",
              "mesh": {"generate": {"element_size": element_size, "parts": leg_parts}},
              "regions": {
                  "tibia": {"rigid": {"prescribed": {"rotation": {"axis": [0, 1, 0], "point": [0, 0, 0],
                                                                  "angle_deg": flexion}}}},
-                 "patella": {"rigid": "free"},
-                 "ligament": {"material": "tendon"},
-                 "tendon": {"material": "tendon"},
+                 "patella": {"rigid": "free", "contact_penalty_scale": STIFF_SCALE},
+                 "ligament": {"material": "tendon", "contact_penalty_scale": STIFF_SCALE},
+                 "tendon": {"material": "tendon", "contact_penalty_scale": STIFF_SCALE},
                  "graded_2": {"material": "graded_2"},
                  "graded_1": {"material": "graded_1"},
                  "muscle": {"material": "muscle"},
@@ -118,7 +148,13 @@ def scene(element_size, increments):
             {"name": "thigh_cut", "type": "planar", "normal": [0, 0, 1],
              "nodes": {"body": "leg", "plane": {"point": [0, 0, THIGH], "normal": [0, 0, 1], "tolerance": 1e-6}}},
         ],
-        "contact": {"self_contact": True},
+        # The patella is pressed onto the femur by the stretched extensor mechanism (Table 2's
+        # Veronda-Westmann tissues stiffen exponentially; about 3 kN at 150 degrees), and at full
+        # flexion the calf presses the thigh at a few hundred kPa: penalties well above the
+        # automatic 10 E / h of the soft skin-fat, and five times more where bone or tendon meets
+        # bone, keep the penetrations to a fraction of the skin's thickness.
+        "contact": {"self_contact": True, "pairs": [{"bodies": ["femur", "leg"], "penalty": FEMUR_PENALTY},
+                                                     {"bodies": ["leg", "leg"], "penalty": LEG_PENALTY}]},
         "solver": {"increments": increments},
         "output": {"vtu": True},
     }
@@ -126,7 +162,8 @@ def scene(element_size, increments):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--element-size", type=float, default=12.0, help="target tet edge length (mm)")
+    parser.add_argument("--element-size", type=float, default=9.0,
+                        help="target tet edge length (mm); 9 gives 8.9k nodes and 37k tets (the seed: 10k, 40k)")
     parser.add_argument("--increments", type=int, default=50, help="load increments over the 150 degrees")
     parser.add_argument("--out", default=str(pathlib.Path(__file__).resolve().parent.parent / "examples" /
                                              "knee-flexion.json"))

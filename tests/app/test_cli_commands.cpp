@@ -42,6 +42,35 @@ TEST(Cli, ValidateWritesNothing) {
   EXPECT_FALSE(fs::exists(directory / "out"));
 }
 
+/// The number before " nodes" in validate's or run's report.
+int reported_nodes(const std::string& text) {
+  const auto at = text.find(" nodes");
+  if (at == std::string::npos) return -1;
+  auto start = text.rfind(' ', at - 1);
+  return std::stoi(text.substr(start + 1, at - start - 1));
+}
+
+TEST(Cli, ElementSizeOverridesEveryGeneratedMesh) {
+  ScratchDirectory directory;
+  const fs::path scene = directory / "scene.json";
+  write_text(scene, small_block_scene().dump(2));  // element_size 5
+  const CommandResult as_written = run_sinew({"validate", scene.string()}, directory);
+  const CommandResult finer = run_sinew({"validate", scene.string(), "--element-size", "2"}, directory);
+  ASSERT_EQ(as_written.exit_code, 0) << as_written.err;
+  ASSERT_EQ(finer.exit_code, 0) << finer.err;
+  EXPECT_GT(reported_nodes(finer.out), 4 * reported_nodes(as_written.out)) << as_written.out << finer.out;
+
+  const CommandResult run = run_sinew(
+      {"run", scene.string(), "--element-size", "2.5", "-o", (directory / "out").string(), "--no-progress"}, directory);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto summary = json::parse(read_text(directory / "out" / "summary.json"));
+  EXPECT_GT(summary.at("nodes").get<int>(), 2 * reported_nodes(as_written.out));
+
+  const CommandResult bad = run_sinew({"validate", scene.string(), "--element-size", "-1"}, directory);
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_THAT(bad.err + bad.out, HasSubstr("--element-size"));
+}
+
 TEST(Cli, RunOnAMissingSceneFileNamesIt) {
   ScratchDirectory directory;
   const fs::path missing = directory / "missing-scene.json";
