@@ -112,6 +112,14 @@ TEST(BuildContact, RegionPenaltyScalesReachTheirTetsAndSurfaceTriangles) {
   for (Index f = 0; f < g.surface.rows(); ++f)
     EXPECT_EQ(g.surface_penalty_scale[f], g.surface_body[f] == 1 ? 8.0 : 1.0) << "triangle " << f;
 
+  // The "*" entry's factor covers the regions without an entry of their own.
+  json starred = contact_scene();
+  starred["bodies"][0]["regions"] = json::parse(R"({"*": {"material": "gel", "contact_penalty_scale": 3.0}})");
+  const ContactSetup star = build(starred);
+  ASSERT_EQ(star.geometry.tet_penalty_scale.size(), star.geometry.tets.rows());
+  for (Index t = 0; t < star.geometry.tets.rows(); ++t)
+    EXPECT_EQ(star.geometry.tet_penalty_scale[t], star.geometry.tet_body[t] == 0 ? 3.0 : 1.0) << "tet " << t;
+
   scene["bodies"][1]["regions"]["plate"]["contact_penalty_scale"] = 0.0;
   try {
     parse_scene(scene, "");

@@ -268,12 +268,17 @@ ContactSetup build_contact(const SceneConfig& scene, const fem::Problem& problem
   for (const auto& s : surfaces) total += static_cast<Index>(s.rows());
   // Per-region penalty factors: on every tet of the region and on the surface triangles whose
   // tet is in the region. Left empty (all 1) when no region sets one.
+  // A region takes its own entry's factor, else the body's "*" entry's (as build_problem does).
   VectorX region_scale = VectorX::Ones(static_cast<Index>(mesh.region_names.size()));
   for (Index b = 0; b < bodies; ++b) {
-    const fem::BodyRange& body = problem.bodies[static_cast<std::size_t>(b)];
-    for (const auto& [name, region] : scene.bodies[static_cast<std::size_t>(b)].regions) {
-      const auto it = std::find(mesh.region_names.begin(), mesh.region_names.end(), body.name + "/" + name);
-      if (it != mesh.region_names.end()) region_scale[it - mesh.region_names.begin()] = region.contact_penalty_scale;
+    const std::string prefix = problem.bodies[static_cast<std::size_t>(b)].name + "/";
+    const auto& regions = scene.bodies[static_cast<std::size_t>(b)].regions;
+    for (std::size_t r = 0; r < mesh.region_names.size(); ++r) {
+      const std::string& global = mesh.region_names[r];
+      if (global.rfind(prefix, 0) != 0) continue;
+      auto entry = regions.find(global.substr(prefix.size()));
+      if (entry == regions.end()) entry = regions.find("*");
+      if (entry != regions.end()) region_scale[static_cast<Index>(r)] = entry->second.contact_penalty_scale;
     }
   }
   const bool scaled = (region_scale.array() != 1.0).any();
