@@ -1,18 +1,23 @@
 #include "cli.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <new>
+#include <string>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
 
 #include "convergence_study.hpp"
+#include "exit_codes.hpp"
 #include "run_scene.hpp"
 #include "static_model.hpp"
 #include "sinew/scene/build_problem.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/core/log.hpp"
 #include "sinew/io/atomic_file.hpp"
+#include "sinew/io/output_directory.hpp"
 #include "sinew/scene/load_scene.hpp"
 #include "sinew/scene/scene_schema.hpp"
 
@@ -29,15 +34,73 @@ scene::SceneConfig with_element_size(scene::SceneConfig config, double size) {
   return config;
 }
 
+/// A finite number > 0 (CLI::PositiveNumber lets NaN through and prints huge bounds in full).
+const CLI::Validator kFinitePositive(
+    [](std::string& text) -> std::string {
+      double value = 0;
+      std::size_t used = 0;
+      try {
+        value = std::stod(text, &used);
+      } catch (const std::exception&) {
+        return "not a number: " + text;
+      }
+      if (used != text.size()) return "not a number: " + text;
+      if (!std::isfinite(value) || value <= 0) return "must be a finite number > 0, got " + text;
+      return {};
+    },
+    "POSITIVE", "finite and > 0");
+
+/// The command line as one string, for the output directory's lock file.
+std::string command_line(int argc, char** argv) {
+  std::string text = "sinew";
+  for (int i = 1; i < argc; ++i) text += std::string(" ") + argv[i];
+  return text;
+}
+
+int code(ExitCode exit_code) { return static_cast<int>(exit_code); }
+
+int run_commands(int argc, char** argv);
+
 }  // namespace
 
 int run_cli(int argc, char** argv) {
+  // Every failure ends here as a message and a documented exit code, never as a signal.
+  try {
+    return run_commands(argc, argv);
+  } catch (const InputError& e) {
+    logger().error("{}", e.what());
+    return code(ExitCode::InputRejected);
+  } catch (const OutputError& e) {
+    logger().error("{}", e.what());
+    return code(ExitCode::OutputFailed);
+  } catch (const OutOfMemoryError& e) {
+    logger().error("{}", e.what());
+    return code(ExitCode::OutOfMemory);
+  } catch (const std::bad_alloc&) {
+    logger().error("out of memory (an allocation failed); try a coarser mesh or a machine with more memory");
+    return code(ExitCode::OutOfMemory);
+  } catch (const Error& e) {
+    logger().error("{}", e.what());
+    return code(ExitCode::InputRejected);
+  } catch (const std::exception& e) {
+    logger().error("internal error: {} (please report it with the scene)", e.what());
+    return code(ExitCode::InternalError);
+  } catch (...) {
+    logger().error("internal error: an unknown exception (please report it with the scene)");
+    return code(ExitCode::InternalError);
+  }
+}
+
+namespace {
+
+int run_commands(int argc, char** argv) {
   CLI::App cli{"sinew: implicit finite elements for elastic solids in contact"};
-  cli.require_subcommand(1);
+  cli.footer(exit_codes_help());
+  cli.require_subcommand(0, 1);  // checked after parsing, so an unknown option is named first
   cli.fallthrough();  // global options (-q, -j) may also follow the subcommand
   int threads = 0;
   bool quiet = false;
-  cli.add_option("-j,--threads", threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  cli.add_option("-j,--threads", threads, "worker threads (default: all cores)")->check(CLI::Range(0, 4096));
   cli.add_flag("-q,--quiet", quiet, "only warnings and errors");
 
   auto* run = cli.add_subcommand("run", "solve a scene and write VTU/PVD, CSV logs and a summary");
@@ -47,15 +110,18 @@ int run_cli(int argc, char** argv) {
   run->add_option("scene", scene_path, "scene file (JSON)")->required();
   run->add_option("-o,--output", run_options.output_directory, "output directory")->capture_default_str();
   run->add_flag("--no-progress", no_progress, "never draw the progress bar");
+  run->add_flag("--overwrite", run_options.overwrite,
+                "replace the results of an earlier sinew run in the output directory (a directory sinew did not "
+                "write is never emptied)");
   double element_size = 0;
   const std::string element_size_help =
       "override the element_size of every generated mesh (length): the same scene coarser or finer";
-  run->add_option("--element-size", element_size, element_size_help)->check(CLI::PositiveNumber);
+  run->add_option("--element-size", element_size, element_size_help)->check(kFinitePositive);
 
   auto* validate = cli.add_subcommand("validate", "check a scene (schema, meshes, constraints) without solving");
   std::string validate_path;
   validate->add_option("scene", validate_path, "scene file (JSON)")->required();
-  validate->add_option("--element-size", element_size, element_size_help)->check(CLI::PositiveNumber);
+  validate->add_option("--element-size", element_size, element_size_help)->check(kFinitePositive);
 
   auto* schema = cli.add_subcommand("schema", "print the scene format");
   bool markdown = false, json = false;
@@ -77,6 +143,8 @@ int run_cli(int argc, char** argv) {
   std::vector<double> sweep_translation, sweep_from;
   convergence->add_option("scene", study_path, "scene file (JSON) with a contact section")->required();
   convergence->add_option("-o,--output", study_options.output_directory, "output directory")->capture_default_str();
+  convergence->add_flag("--overwrite", study_options.overwrite,
+                        "replace the results of an earlier sinew study in the output directory");
   convergence->add_option("--penalties", study_options.penalties, "penalties to run (0: no contact)")
       ->delimiter(',')
       ->capture_default_str();
@@ -102,21 +170,28 @@ int run_cli(int argc, char** argv) {
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return cli.exit(e);
+    // --help prints and exits 0; every mistake prints its message and exits 1.
+    return cli.exit(e) == 0 ? code(ExitCode::Success) : code(ExitCode::InputRejected);
+  }
+  if (cli.get_subcommands().empty()) {
+    std::string given = argc > 1 ? std::string(" (got \"") + argv[1] + "\")" : std::string();
+    return cli.exit(CLI::RequiredError("a subcommand is required: run, validate, schema or study" + given)) == 0
+               ? code(ExitCode::Success)
+               : code(ExitCode::InputRejected);
   }
   if (quiet) logger().set_level(spdlog::level::warn);
   std::unique_ptr<tbb::global_control> thread_limit;
   if (threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
 
-  try {
+  {
     if (*schema) {
       const std::string text = markdown ? scene::scene_reference_markdown() : scene::scene_json_schema().dump(2) + "\n";
       if (schema_output.empty())
         std::cout << text;
       else
         io::write_file_atomically(schema_output, text);
-      return 0;
+      return code(ExitCode::Success);
     }
     if (*validate) {
       const auto config = with_element_size(scene::load_scene_file(validate_path), element_size);
@@ -131,7 +206,7 @@ int run_cli(int argc, char** argv) {
       std::cout << fmt::format("{}: valid ({} bodies, {} nodes, {} tets, {} unknowns{})\n", validate_path,
                                config.bodies.size(), problem.mesh.num_nodes(), problem.mesh.num_tets(),
                                model.dofs->num_dofs(), extras);
-      return 0;
+      return code(ExitCode::Success);
     }
     if (*convergence) {
       study_options.methods.clear();
@@ -143,6 +218,8 @@ int run_cli(int argc, char** argv) {
       if (!study_options.sweep_body.empty() && sweep_translation.size() != 3)
         throw InputError("study convergence: --sweep-body needs --sweep-translation X Y Z");
       study_options.progress = !quiet;
+      study_options.command = command_line(argc, argv);
+      io::check_output_directory(study_options.output_directory, {.overwrite = study_options.overwrite});
       const auto config = scene::load_scene_file(study_path);
       const ConvergenceStudyReport report = run_convergence_study(config, study_options);
       const bool all_solved = std::all_of(report.runs.begin(), report.runs.end(),
@@ -153,27 +230,27 @@ int run_cli(int argc, char** argv) {
                     study_options.output_directory, study_options.sweep_body.empty() ? "" : ", sweep_*.csv",
                     study_options.output_directory);
       if (!all_solved) logger().warn("some runs stopped before their end (see runs.csv); this is a result, not an error");
-      return 0;
+      return code(ExitCode::Success);
     }
     run_options.progress_bar = !no_progress;
     run_options.log_steps = !quiet;
+    run_options.command = command_line(argc, argv);
+    // The output directory is checked before any work (nothing is written until the scene has
+    // passed every check).
+    io::check_output_directory(run_options.output_directory, {.overwrite = run_options.overwrite});
     const auto config = with_element_size(scene::load_scene_file(scene_path), element_size);
     const RunReport report = run_scene(config, run_options);
     if (!report.success) {
       logger().error("{}", report.message);
       logger().error("outputs so far, and the last converged state (last_converged.vtu), are in {}",
                      run_options.output_directory);
-      return 2;
+      return code(ExitCode::SolveStopped);
     }
     logger().info("{}; results in {}", report.message, run_options.output_directory);
-    return 0;
-  } catch (const InputError& e) {
-    logger().error("{}", e.what());
-    return 1;
-  } catch (const Error& e) {
-    logger().error("{}", e.what());
-    return 1;
+    return code(ExitCode::Success);
   }
 }
+
+}  // namespace
 
 }  // namespace sinew::app

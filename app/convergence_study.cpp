@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "run_scene.hpp"
+#include "sinew/io/output_directory.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/core/log.hpp"
 #include "sinew/io/atomic_file.hpp"
@@ -146,7 +147,7 @@ ConvergenceStudyReport run_convergence_study(const scene::SceneConfig& scene, co
   const fem::Problem problem = scene::build_problem(scene);
   check_options(scene, problem, o);
   contact::ContactEnergy measure = measuring_contact(scene, problem);
-  fs::create_directories(o.output_directory);
+  const io::OutputDirectoryLock lock(o.output_directory, {.overwrite = o.overwrite}, o.command);
 
   ConvergenceStudyReport report;
   io::CsvTable residuals(o.output_directory + "/residuals.csv",

@@ -47,6 +47,8 @@ struct ConvergenceStudyOptions {
   int sweep_positions = 41;
   double sweep_penalty = 100;
   bool progress = true;  ///< a log line per run
+  bool overwrite = false;  ///< empty an earlier sinew run's output directory first (see io::OutputDirectoryOptions)
+  std::string command;     ///< recorded in the output directory's lock file
 };
 
 /// One solve of the study.

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "sinew/core/error.hpp"
 #include "sinew/fem/reactions.hpp"
 #include "sinew/io/atomic_file.hpp"
 
@@ -165,14 +166,19 @@ void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State&
   }
 }
 
-void RunOutput::write_dynamic_summary(const solver::DynamicResult& result, double wall_seconds,
-                                      const std::string& scene_name) {
+void RunOutput::flush_tables() const {
   steps_->flush();
   newton_->flush();
   if (rigid_) rigid_->flush();
+}
+
+void RunOutput::write_dynamic_summary(const solver::DynamicResult& result, double wall_seconds,
+                                      const std::string& scene_name) {
+  flush_tables();
   nlohmann::json j;
   j["scene"] = scene_name;
   j["success"] = result.success;
+  j["status"] = result.success ? "solved" : "stopped";
   j["message"] = result.message;
   j["time_reached"] = result.time;
   j["steps"] = result.steps;
@@ -241,9 +247,11 @@ void RunOutput::finish_summary(nlohmann::json& j, double wall_seconds, const sol
 }
 
 void RunOutput::write_summary(const solver::StaticResult& result, double wall_seconds, const std::string& scene_name) {
+  flush_tables();
   nlohmann::json j;
   j["scene"] = scene_name;
   j["success"] = result.success;
+  j["status"] = result.success ? "solved" : "stopped";
   j["message"] = result.message;
   j["lambda_reached"] = result.last_converged.lambda;
   j["increments_completed"] = result.increments_completed;
@@ -252,6 +260,22 @@ void RunOutput::write_summary(const solver::StaticResult& result, double wall_se
   j["step_cuts"] = result.cuts;
   j["snap_throughs"] = result.snap_throughs;
   finish_summary(j, wall_seconds, result.times);
+}
+
+void RunOutput::write_stopped_summary(const std::string& scene_name, const std::string& status,
+                                      const std::string& message, const std::string& reached_key, double reached,
+                                      double wall_seconds) {
+  try {
+    flush_tables();
+  } catch (const Error&) {  // the summary below may still fit
+  }
+  nlohmann::json j;
+  j["scene"] = scene_name;
+  j["success"] = false;
+  j["status"] = status;
+  j["message"] = message;
+  j[reached_key] = reached;
+  finish_summary(j, wall_seconds, {});
 }
 
 }  // namespace sinew::app

@@ -11,7 +11,9 @@
 ///                          self-contact, half the sum of nodal force magnitudes "contact.<a>.<a>.force")
 ///   newton.csv             one row per Newton iteration
 ///   last_converged.vtu     on failure: the state the run could reach
-///   summary.json           status, message, counts, time per phase
+///   summary.json           status ("solved", "stopped", "output_error", "out_of_memory"),
+///                          message, counts, time per phase
+/// steps.csv and newton.csv are always written, with their header, even when no step converged.
 
 #include <memory>
 #include <optional>
@@ -60,6 +62,11 @@ class RunOutput {
   DynamicEnergies energies(const fem::State& state, const NodalVectors& velocity,
                            const contact::ContactStatistics* contact) const;
   void write_summary(const solver::StaticResult& result, double wall_seconds, const std::string& scene_name);
+  /// summary.json of a run stopped by something other than the solve (`status`: "output_error",
+  /// "out_of_memory"), with the load parameter or time reached (`reached_key`: lambda_reached or
+  /// time_reached); the CSV logs are flushed first.
+  void write_stopped_summary(const std::string& scene_name, const std::string& status, const std::string& message,
+                             const std::string& reached_key, double reached, double wall_seconds);
 
   const std::string& directory() const { return directory_; }
   /// Seconds spent before solving (meshing, material depth, model set-up): the "setup" phase
@@ -68,6 +75,8 @@ class RunOutput {
 
  private:
   io::VtuData vtu_data(const fem::State& state) const;
+  /// Rewrites steps.csv, newton.csv and rigid_bodies.csv with every row so far.
+  void flush_tables() const;
   /// Adds the mesh sizes and the time per phase to `j` and writes summary.json.
   void finish_summary(nlohmann::json& j, double wall_seconds, const solver::PhaseTimes& times) const;
   /// Contact figures of `state` (one collision update and energy evaluation), none without contact.

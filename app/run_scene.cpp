@@ -2,12 +2,15 @@
 
 #include <chrono>
 #include <cmath>
+#include <new>
 #include <optional>
 
 #include <fmt/format.h>
 
 #include "run_output.hpp"
+#include "sinew/core/error.hpp"
 #include "sinew/core/log.hpp"
+#include "sinew/io/output_directory.hpp"
 #include "sinew/io/progress.hpp"
 #include "sinew/scene/build_problem.hpp"
 #include "static_model.hpp"
@@ -35,7 +38,8 @@ std::string phase_split(const solver::PhaseTimes& t, double setup_seconds, doubl
 }
 
 RunReport run_dynamics(const scene::SceneConfig& scene, const StaticModel& model, RunOutput& output,
-                       const RunOptions& options, std::chrono::steady_clock::time_point start, double setup_seconds) {
+                       const RunOptions& options, std::chrono::steady_clock::time_point start, double setup_seconds,
+                       double& reached) {
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const solver::DynamicOptions& dyn = scene.dynamics.options;
   using Integrator = solver::DynamicOptions::Integrator;
@@ -51,6 +55,7 @@ RunReport run_dynamics(const scene::SceneConfig& scene, const StaticModel& model
     if (options.on_iteration) options.on_iteration(step.step + 1, step.time, it);
   };
   callbacks.on_step = [&](const solver::TimeStepRecord& step, const fem::State& state, const NodalVectors& velocity) {
+    reached = step.time;
     output.write_time_step(step, state, velocity);
     if (options.log_steps && dyn.integrator != Integrator::Explicit)
       log_line(bar, spdlog::level::info, fmt::format("step {:5d}  t {:.6g}  h {:.3g}  newton {:2d}  |r| {:.2e}", step.step,
@@ -84,6 +89,10 @@ RunReport run_dynamics(const scene::SceneConfig& scene, const StaticModel& model
   return report;
 }
 
+RunReport run_static(const scene::SceneConfig& scene, const StaticModel& model, RunOutput& output,
+                     const RunOptions& options, std::chrono::steady_clock::time_point start, double setup_seconds,
+                     double& reached);
+
 }  // namespace
 
 RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) {
@@ -109,9 +118,41 @@ RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) 
                 problem.mesh.num_nodes(), problem.mesh.num_tets(), model.dofs->num_dofs(), problem.rigid_bodies.size(),
                 setup_seconds);
 
+  const io::OutputDirectoryLock lock(options.output_directory, {.overwrite = options.overwrite}, options.command);
   RunOutput output(options.output_directory, problem, model, scene.output);
   output.set_setup_seconds(setup_seconds);
-  if (scene.dynamics.enabled) return run_dynamics(scene, model, output, options, start, setup_seconds);
+  // Where the run is (lambda or time of the last accepted step), for a summary of a run that
+  // stops for a failed write or for memory.
+  double reached = 0;
+  const char* reached_key = scene.dynamics.enabled ? "time_reached" : "lambda_reached";
+  auto record_stop = [&](const char* status, const std::string& message) {
+    try {
+      output.write_stopped_summary(scene.name, status, message, reached_key, reached, elapsed());
+    } catch (...) {  // the disk may still be full: the message on standard error remains
+    }
+  };
+  try {
+    return scene.dynamics.enabled ? run_dynamics(scene, model, output, options, start, setup_seconds, reached)
+                                  : run_static(scene, model, output, options, start, setup_seconds, reached);
+  } catch (const OutputError& e) {
+    record_stop("output_error", e.what());
+    throw;
+  } catch (const OutOfMemoryError& e) {
+    record_stop("out_of_memory", e.what());
+    throw;
+  } catch (const std::bad_alloc&) {
+    const std::string message = "out of memory (an allocation failed); try a coarser mesh or a machine with more memory";
+    record_stop("out_of_memory", message);
+    throw OutOfMemoryError(message);
+  }
+}
+
+namespace {
+
+RunReport run_static(const scene::SceneConfig& scene, const StaticModel& model, RunOutput& output,
+                     const RunOptions& options, std::chrono::steady_clock::time_point start, double setup_seconds,
+                     double& reached) {
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const int increments = std::max(1, scene.solver.stepping.increments);
   io::ProgressBar bar({.total = 1.0, .label = scene.name});
 
@@ -124,6 +165,7 @@ RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) 
                            it.residual));
   };
   callbacks.on_step = [&](const solver::StepRecord& step, const fem::State& state) {
+    reached = step.lambda;
     output.write_step(step, state);
     if (options.log_steps)
       log_line(bar, spdlog::level::info,
@@ -152,5 +194,7 @@ RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) 
                 phase_split(report.result.times, report.setup_seconds, report.wall_seconds));
   return report;
 }
+
+}  // namespace
 
 }  // namespace sinew::app

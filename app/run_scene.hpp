@@ -15,6 +15,8 @@ struct RunOptions {
   std::string output_directory = "out";
   bool progress_bar = true;  ///< drawn only when stderr is a terminal
   bool log_steps = true;     ///< one log line per accepted load step
+  bool overwrite = false;    ///< empty an earlier sinew run's output directory first
+  std::string command;       ///< recorded in the output directory's lock file (which run holds it)
   /// Called after newton.csv got the row of every Newton iteration (step counter, then the load
   /// parameter of a static step or the target time of a dynamic one).
   std::function<void(int step, double lambda_or_time, const solver::IterationRecord& iteration)> on_iteration;
@@ -30,7 +32,10 @@ struct RunReport {
 };
 
 /// Builds and solves the scene. Input errors (InputError) propagate before anything is
-/// written; a solve that fails returns success = false after writing the last converged state.
+/// written; then the output directory is locked and emptied (io::OutputDirectoryLock). A solve
+/// that fails returns success = false after writing the last converged state. A failed write
+/// (OutputError) or exhausted memory (OutOfMemoryError, from std::bad_alloc too) propagates
+/// after summary.json has recorded where the run stopped, if it could still be written.
 RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options);
 
 }  // namespace sinew::app

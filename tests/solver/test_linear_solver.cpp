@@ -8,7 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
+
+#include <SuiteSparse_config.h>
+
+#include "sinew/core/error.hpp"
 
 namespace sinew::solver {
 namespace {
@@ -56,6 +61,39 @@ TEST_P(LinearSolvers, SolveWorksAfterTheFactorizedMatrixIsDestroyed) {
 INSTANTIATE_TEST_SUITE_P(AllKinds, LinearSolvers,
                          ::testing::Values(LinearSolverOptions::Kind::Cholmod, LinearSolverOptions::Kind::Gmres,
                                            LinearSolverOptions::Kind::ConjugateGradient));
+
+// CHOLMOD's allocations go through SuiteSparse_config; one that fails during the numeric
+// factorization must be reported as memory, not as an indefinite matrix (which Newton would
+// answer by shifting and halving the step until the run is killed).
+void* failing_malloc(std::size_t) { return nullptr; }
+void* failing_calloc(std::size_t, std::size_t) { return nullptr; }
+void* failing_realloc(void*, std::size_t) { return nullptr; }
+
+TEST(CholmodSolver, OutOfMemoryIsItsOwnError) {
+  auto solver = make_linear_solver({});
+  const fem::SparseMatrix K = laplacian(300, 0.5);
+  solver->analyze(K);
+  const SuiteSparse_config_struct saved = SuiteSparse_config;
+  SuiteSparse_config.malloc_func = failing_malloc;
+  SuiteSparse_config.calloc_func = failing_calloc;
+  SuiteSparse_config.realloc_func = failing_realloc;
+  bool thrown = false;
+  try {
+    solver->factorize(K);
+  } catch (const OutOfMemoryError& e) {
+    thrown = true;
+    EXPECT_NE(std::string(e.what()).find("out of memory"), std::string::npos) << e.what();
+  } catch (...) {
+    SuiteSparse_config = saved;
+    throw;
+  }
+  SuiteSparse_config = saved;
+  EXPECT_TRUE(thrown);
+  // Memory back: the same solver factorizes and solves.
+  ASSERT_TRUE(solver->factorize(K));
+  VectorX x;
+  EXPECT_TRUE(solver->solve(VectorX::Ones(300), x).success);
+}
 
 }  // namespace
 }  // namespace sinew::solver

@@ -367,3 +367,57 @@ TEST(StaticSolver, SnapThroughBudgetCarriesTheSolutionPastALimitPoint) {
   EXPECT_NEAR(u.col(0).maxCoeff(), root, 1e-8);
   EXPECT_LT(u.rightCols(2).cwiseAbs().maxCoeff(), 1e-10);
 }
+
+// Nodal forces of 1e200 are finite, and so is the energy, but the residual's norm overflows:
+// the residual and the force scale are infinite, and inf <= inf once passed the convergence
+// test and the run reported "solved" after 0 iterations.
+TEST(StaticSolver, OverflowingForcesAreNeverAnEquilibrium) {
+  auto p = st::box_problem(2, 2, 2, Vector3(0, 0, 0), Vector3(1, 1, 1), st::mooney_rivlin(), 1e-100);
+  p.gravity = Vector3(0, 0, -1e300);
+  p.prescribed.push_back({"bottom", st::nodes_on_plane(p.mesh, 2, 0.0), {}});
+  SolverRig run(std::move(p));
+  solver::StaticSolverOptions options;
+  options.stepping.increments = 1;
+  const auto result = solver::solve_static(*run.objective, options, {.characteristic_length = 1.7, .reference_force = 1.0});
+  EXPECT_FALSE(result.success);
+  EXPECT_NE(result.message.find("not finite"), std::string::npos) << result.message;
+}
+
+// A full turn in one increment: the top of a column turned 360 degrees about its axis. Taken as
+// one step, the turned top coincides with the rest pose and the column stays straight (torque
+// ~0); the stepper must split it so the column is twisted, half a turn at mid-height.
+TEST(StaticSolver, AFullTurnInOneIncrementIsTakenInStepsOfAtMostThirtyDegrees) {
+  const double height = 12;
+  auto p = st::box_problem(2, 2, 12, Vector3(0, 0, 0), Vector3(1, 1, height), st::mooney_rivlin(1.0, 0.3, 2.0));
+  p.prescribed.push_back({"bottom", st::nodes_on_plane(p.mesh, 2, 0.0), {}});
+  fem::RigidMotion turn;
+  turn.axis = Vector3::UnitZ();
+  turn.axis_point = Vector3(0.5, 0.5, 0);
+  turn.angle = 2 * M_PI;
+  p.prescribed.push_back({"top", st::nodes_on_plane(p.mesh, 2, height), turn});
+  SolverRig run(std::move(p));
+  solver::StaticSolverOptions options;
+  options.stepping.increments = 1;
+  const auto result =
+      solver::solve_static(*run.objective, options, {.characteristic_length = height, .reference_force = 1.0});
+  ASSERT_TRUE(result.success) << result.message;
+  EXPECT_GE(result.steps, 12);
+  // Mid-height corners have turned by about 180 degrees: (1, 1) is near (0, 0) and vice versa.
+  const auto& x = result.last_converged.x;
+  const auto& X = run.problem.mesh.rest;
+  int checked = 0;
+  for (Index v = 0; v < X.rows(); ++v) {
+    if (std::abs(X(v, 2) - height / 2) > 1e-9 || std::abs(X(v, 0) - 0.5) < 0.1) continue;
+    const Vector3 from_axis_rest(X(v, 0) - 0.5, X(v, 1) - 0.5, 0);
+    const Vector3 from_axis(x(v, 0) - 0.5, x(v, 1) - 0.5, 0);
+    EXPECT_LT(from_axis.dot(from_axis_rest), -0.5 * from_axis_rest.squaredNorm()) << "node " << v;
+    ++checked;
+  }
+  EXPECT_GT(checked, 0);
+  // The twisted column carries a torque about z, far from zero.
+  const auto g = run.objective->full_gradient(result.last_converged);
+  Vector3 moment = Vector3::Zero();
+  for (Index v : st::nodes_on_plane(run.problem.mesh, 2, height))
+    moment += (x.row(v) - Eigen::RowVector3d(0.5, 0.5, height)).transpose().cross(-g.row(v).transpose());
+  EXPECT_GT(std::abs(moment.z()), 0.01);
+}

@@ -26,4 +26,18 @@ class SolveError : public Error {
   using Error::Error;
 };
 
+/// An output file or directory could not be written (full disk, permissions, I/O error).
+/// Files written before stay complete: every output is written atomically.
+class OutputError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// The machine's memory ran out (an allocation or a sparse factorization failed for memory).
+/// Never reported as a numerical failure: halving a step does not make memory appear.
+class OutOfMemoryError : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace sinew

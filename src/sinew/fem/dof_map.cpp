@@ -168,6 +168,14 @@ State DofMap::initial_state(double lambda) const {
   return state;
 }
 
+double DofMap::largest_prescribed_turn(double from, double to) const {
+  double turn = 0;
+  for (const PrescribedNodes& set : problem_.prescribed) turn = std::max(turn, set.motion.largest_turn(from, to));
+  for (const RigidInfo& info : rigid_)
+    if (info.kind == RigidBody::Kind::Prescribed) turn = std::max(turn, info.motion.largest_turn(from, to));
+  return turn;
+}
+
 void DofMap::sync(State& state, double lambda) const {
   state.lambda = lambda;
   const Positions& X = problem_.mesh.rest;

@@ -51,6 +51,10 @@ class DofMap {
   /// onto their planes at lambda, places free rigid bodies' members from their poses.
   void sync(State& state, double lambda) const;
 
+  /// The largest angle (radians) by which a prescribed motion (of nodes or of a rigid body)
+  /// turns anything between load parameters `from` and `to` (see RigidMotion::largest_turn).
+  double largest_prescribed_turn(double from, double to) const;
+
   /// q-space gradient J^T g (#dofs) of a full-space gradient g (#V x 3).
   VectorX reduce_gradient(const State& state, const NodalVectors& g) const;
 

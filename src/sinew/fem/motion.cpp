@@ -1,5 +1,6 @@
 #include "sinew/fem/motion.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sinew::fem {
@@ -17,6 +18,15 @@ double Amplitude::operator()(double lambda) const {
     }
   }
   return points.back().second;
+}
+
+double RigidMotion::largest_turn(double from, double to) const {
+  if (angle == 0) return 0;
+  const double a0 = amplitude(from);
+  double change = std::abs(amplitude(to) - a0);
+  for (const auto& [lambda, factor] : amplitude.points)
+    if (lambda > std::min(from, to) && lambda < std::max(from, to)) change = std::max(change, std::abs(factor - a0));
+  return std::abs(angle) * change;
 }
 
 Matrix3 RigidMotion::rotation(double lambda) const {

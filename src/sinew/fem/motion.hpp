@@ -32,6 +32,10 @@ struct RigidMotion {
   /// Position at lambda of a point at rest position X.
   Vector3 apply(const Vector3& X, double lambda) const { return rotation(lambda) * X + offset(lambda); }
   bool is_identity() const { return translation.isZero(0) && angle == 0; }
+  /// The largest angle (radians) by which the motion turns a body away from its pose at `from`
+  /// anywhere in [from, to]: |angle| times the largest change of the amplitude there (the
+  /// amplitude is piecewise linear, so its extremes are at `to` or at a point in between).
+  double largest_turn(double from, double to) const;
 };
 
 }  // namespace sinew::fem

@@ -22,7 +22,7 @@ namespace {
 std::atomic<unsigned long long> g_temp_counter{0};
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, const std::string& reason) {
-  throw Error("cannot write file '" + path + "': " + what + ": " + reason);
+  throw OutputError("cannot write file '" + path + "': " + what + ": " + reason);
 }
 
 /// Flushes the directory entry of a rename to disk. Best effort: some file systems refuse

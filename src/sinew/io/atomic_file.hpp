@@ -9,7 +9,7 @@
 namespace sinew::io {
 
 /// Writes `content` to `path` atomically; creates missing parent directories. Throws
-/// sinew::Error naming the path on any failure (the target is then left as it was).
+/// sinew::OutputError naming the path on any failure (the target is then left as it was).
 void write_file_atomically(const std::string& path, std::string_view content);
 
 }  // namespace sinew::io

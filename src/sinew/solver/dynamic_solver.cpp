@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 #include <fmt/format.h>
 
+#include "sinew/core/error.hpp"
 #include "sinew/solver/linear_solver.hpp"
+#include "sinew/solver/prescribed_turn.hpp"
 
 namespace sinew::solver {
 namespace {
@@ -73,7 +76,15 @@ DynamicResult solve_implicit(Objective& objective, const DynamicTerms& terms, co
   double t = 0;
   result.min_step = std::numeric_limits<double>::infinity();
   while (t < T * (1 - 1e-12)) {
-    const double h = std::min(dt, outputs.time() - t);
+    // A large prescribed rotation is taken in several steps (see prescribed_turn.hpp).
+    const double h = T * step_within_turn_bound(dofs, t / T, std::min(dt, outputs.time() - t) / T, min_step / T);
+    if (h < min_step) {
+      result.message = fmt::format(
+          "a prescribed motion turns by more than {:.0f} degrees within the smallest allowed time step from "
+          "t = {:.6g} (min_time_step {:.3g}): slow the rotation down (a longer end_time) or allow smaller steps",
+          kMaxPrescribedTurnPerStep * 180 / std::numbers::pi, t, min_step);
+      break;
+    }
     attempt = record;
     attempt.time = t + h;
     attempt.step_size = h;
@@ -158,12 +169,12 @@ DynamicResult solve_explicit(Objective& objective, const DynamicTerms& terms, co
     if (diagonal) {
       inverse_diagonal = Mq.diagonal().cwiseInverse();
       if (!inverse_diagonal.allFinite())
-        throw std::invalid_argument("explicit integration: a degree of freedom has no mass (zero density?)");
+        throw InputError("explicit integration: a degree of freedom has no mass (a region or rigid body of density 0?): give every moving part a density > 0");
       return;
     }
     if (first) linear->analyze(Mq);
     if (!linear->factorize(Mq))
-      throw std::invalid_argument("explicit integration: the reduced mass matrix is singular (zero density?)");
+      throw InputError("explicit integration: the reduced mass matrix is singular (a region or rigid body of density 0?): give every moving part a density > 0");
   };
   bool rigid_free = false;
   for (Index a = 0; a < M.num_nodes(); ++a)

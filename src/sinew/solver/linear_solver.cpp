@@ -4,6 +4,10 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <unsupported/Eigen/IterativeSolvers>
 
+#include <fmt/format.h>
+
+#include "sinew/core/error.hpp"
+
 namespace sinew::solver {
 namespace {
 
@@ -18,10 +22,14 @@ class CholmodSolver final : public LinearSolver {
     // An indefinite matrix is an expected event (the caller regularizes); keep CHOLMOD quiet.
     llt_.cholmod().print = 0;
   }
-  void analyze(const SparseMatrix& K) override { llt_.analyzePattern(K); }
+  void analyze(const SparseMatrix& K) override {
+    llt_.analyzePattern(K);
+    check_memory("analyze");
+  }
   bool factorize(const SparseMatrix& K) override {
     K_ = K;  // owned: the caller's matrix may be a temporary (a regularized copy)
     llt_.factorize(K_);
+    check_memory("factorize");
     return llt_.info() == Eigen::Success;
   }
   LinearSolveStats solve(const VectorX& b, VectorX& x) override {
@@ -34,6 +42,16 @@ class CholmodSolver final : public LinearSolver {
   const char* name() const override { return "cholmod"; }
 
  private:
+  /// CHOLMOD reports a failed allocation in its status; Eigen folds it into "not positive
+  /// definite", which would send Newton into shifting and halving forever.
+  void check_memory(const char* phase) {
+    if (llt_.cholmod().status == CHOLMOD_OUT_OF_MEMORY) {
+      llt_.cholmod().status = CHOLMOD_OK;
+      throw OutOfMemoryError(fmt::format("out of memory: CHOLMOD could not {} the {} x {} stiffness matrix ({} nonzeros)",
+                                         phase, K_.rows(), K_.cols(), K_.nonZeros()));
+    }
+  }
+
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt_;
   SparseMatrix K_;  ///< the matrix last factorized
 };

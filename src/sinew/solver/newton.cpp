@@ -144,6 +144,14 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
     result.residual = residual;
     result.force_scale = scale;
     result.energy = energy;
+    if (!std::isfinite(residual) || !std::isfinite(scale) || !std::isfinite(context.reference_force)) {
+      // inf <= inf would pass the test below: an overflow is never an equilibrium.
+      result.failure = fmt::format(
+          "the forces are not finite (residual {}, force scale {}, reference force {}): a load, stiffness, density or "
+          "penalty of the scene overflows double precision; scale the scene's units or its values down",
+          residual, scale, context.reference_force);
+      return result;
+    }
     if ((small_residual && small_increment) || dofs.num_dofs() == 0) {
       result.converged = true;
       return result;

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 #include <fmt/format.h>
+
+#include "sinew/solver/prescribed_turn.hpp"
 
 namespace sinew::solver {
 namespace {
@@ -98,6 +101,18 @@ StaticResult solve_load_steps(Objective& objective, const StaticSolverOptions& o
     while (current.lambda < target - 1e-12 * increment_size) {
       double delta = std::min(step, target - current.lambda);
       if (target - (current.lambda + delta) < 1e-6 * increment_size) delta = target - current.lambda;
+      // A large prescribed rotation is taken in several steps (a turn of 360 degrees in one
+      // step would land on the rest pose).
+      const double smallest = stepping.min_step * increment_size;
+      delta = step_within_turn_bound(dofs, current.lambda, delta, smallest);
+      if (delta < smallest) {
+        result.message = fmt::format(
+            "a prescribed motion turns by more than {:.0f} degrees within the smallest allowed load step from "
+            "lambda = {:.6g} ({:.3g}, min_step = {:.3g} of an increment): give the rotation fewer degrees per "
+            "increment (more increments) or a larger min_step",
+            kMaxPrescribedTurnPerStep * 180 / std::numbers::pi, current.lambda, smallest, stepping.min_step);
+        return result;
+      }
       const double lambda_new = current.lambda + delta;
       attempt = StepRecord{};
       attempt.increment = k;
