@@ -6,13 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <set>
-#include <sstream>
 
 #include "sinew/core/error.hpp"
 #include "sinew/scene/scene_schema.hpp"
+#include "sinew/scene/scene_text.hpp"
 
 namespace sinew::scene {
 
@@ -107,7 +106,15 @@ class SceneReader {
 
     if (scene.contains("contact")) config.contact = read_contact(scene.at("contact"), config);
     config.solver = read_solver(scene.at("solver"));
-    if (scene.contains("dynamics")) config.dynamics = read_dynamics(scene.at("dynamics"));
+    if (scene.contains("dynamics")) {
+      config.dynamics = read_dynamics(scene.at("dynamics"));
+      // Each output writes a VTU of the whole mesh: 1e6 of them is already far too many.
+      const double outputs = config.dynamics.options.end_time / config.dynamics.options.output_interval;
+      if (outputs > 1e6) {
+        error("dynamics.output_interval", "gives " + format_number(std::ceil(outputs)) +
+                                              " outputs over end_time; at most 1e+06 are allowed");
+      }
+    }
     config.output.vtu = scene.at("output").at("vtu").get<bool>();
     config.output.every = scene.at("output").at("every").get<int>();
     return config;
