@@ -593,13 +593,9 @@ SceneConfig parse_scene(const json& scene, const std::string& base_directory) {
 }
 
 SceneConfig load_scene_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError("scene file not found: " + path);
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (!in.good() && !in.eof()) throw InputError("cannot read scene file " + path);
-  const std::string text = buffer.str();
+  const SceneTextLimits limits;
+  const std::string text = read_scene_text(path, limits);
+  check_json_depth(text, limits.max_depth, path);
 
   DuplicateKeyFinder duplicates;
   json scene;
