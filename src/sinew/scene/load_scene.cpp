@@ -10,6 +10,7 @@
 #include <set>
 
 #include "sinew/core/error.hpp"
+#include "sinew/scene/scene_names.hpp"
 #include "sinew/scene/scene_schema.hpp"
 #include "sinew/scene/scene_text.hpp"
 
@@ -117,6 +118,7 @@ class SceneReader {
     }
     config.output.vtu = scene.at("output").at("vtu").get<bool>();
     config.output.every = scene.at("output").at("every").get<int>();
+    for (std::string& clash : output_name_clashes(config)) errors.push_back(std::move(clash));
     return config;
   }
 
