@@ -13,6 +13,7 @@
 #include "sinew/material/material_spec.hpp"
 #include "sinew/mesh/generate.hpp"
 #include "sinew/mesh/read_msh.hpp"
+#include "sinew/scene/resource_estimate.hpp"
 #include "sinew/scene/schema.hpp"
 
 namespace sinew::scene {
@@ -71,6 +72,7 @@ class ProblemBuilder {
   explicit ProblemBuilder(const SceneConfig& scene) : scene_(scene) {}
 
   fem::Problem build() {
+    check_resource_limits(scene_);  // before any Gmsh call
     std::vector<PlacedBody> bodies;
     for (std::size_t b = 0; b < scene_.bodies.size(); ++b) bodies.push_back(place_body(b));
     throw_if_errors();
