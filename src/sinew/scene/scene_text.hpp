@@ -2,11 +2,14 @@
 /// @file scene_text.hpp
 /// Reading a scene file's text safely, before it is parsed: only regular files (a FIFO or a
 /// device would block or never end), bounded in size, and bounded in nesting depth (the parser
-/// keeps state per open bracket, so 100,000 nested "[" would exhaust memory).
+/// keeps state per open bracket, so 100,000 nested "[" would exhaust memory); then parsing it,
+/// with the position of malformed text and every repeated key reported.
 
 #include <cstddef>
 #include <cstdint>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 namespace sinew::scene {
 
@@ -28,5 +31,12 @@ std::string read_scene_text(const std::string& path, const SceneTextLimits& limi
 /// strings only (escaped quotes inside strings are skipped). Lines and columns start at 1.
 /// Malformed text is left to the parser: this scan only bounds depth.
 void check_json_depth(const std::string& text, std::size_t max_depth, const std::string& path);
+
+/// The scene text as JSON: checks its depth (check_json_depth), then parses it. Throws
+/// InputError "<path>:<line>:<column>: malformed JSON: <parser message>" for malformed text or a
+/// number beyond a double's range, and "<json path>: duplicate key" (one per repeated key,
+/// then "(in scene file <path>)") for an object that repeats a key, which nlohmann would keep
+/// silently.
+nlohmann::json parse_scene_json(const std::string& text, const std::string& path, const SceneTextLimits& limits = {});
 
 }  // namespace sinew::scene
