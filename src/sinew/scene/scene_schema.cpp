@@ -46,8 +46,8 @@ using namespace schema_builder;  // NOLINT(google-build-using-namespace)
 // ---------------------------------------------------------------- bounds
 // Every number is bounded, in the scene's own units, so that the products the solver forms
 // (modulus x strain, penalty x depth^2 x area, density x gravity x volume, ...) stay finite and
-// Gmsh's geometry well conditioned; real scenes lie orders of magnitude inside (see "Bounds" in
-// docs/scene-reference.md, "Conventions").
+// Gmsh's geometry well conditioned; real scenes lie orders of magnitude inside
+// (docs/scene-reference.md, Conventions: Bounds).
 constexpr double kMaxLength = 1e6;         ///< coordinates, lengths, displacements, direction components (length)
 constexpr double kMinElementSize = 1e-9;   ///< smallest element_size (length); the tet estimate bounds it further
 constexpr double kMaxPhysical = 1e12;      ///< moduli, stresses, densities, gravity, forces, damping (their units)
@@ -87,9 +87,9 @@ SchemaNode motion_definition() {
                     vec3("translation", "final translation (length)").within(kMaxLength).fallback(vec3_json(defaults.translation)),
                     object("rotation", "final rotation about an axis through a point (none when omitted)",
                            {
-                               vec3("axis", "rotation axis direction, normalized on use").within(kMaxLength).required().nonzero(),
+                               vec3("axis", "rotation axis direction, normalized on use").required().nonzero().within(kMaxLength),
                                vec3("point", "a point on the axis (length)").within(kMaxLength).fallback(vec3_json(defaults.axis_point)),
-                               number("angle_deg", "final angle (degrees, right-hand rule)").within(kMaxAngle).required(),
+                               number("angle_deg", "final angle (degrees, right-hand rule)").required().within(kMaxAngle),
                            }),
                     ref("amplitude", "factor a(lambda) applied to angle and translation", "amplitude"),
                 });
@@ -105,15 +105,15 @@ SchemaNode node_selector_definition() {
           string("region", "the nodes of the tets of this mesh region").non_empty(),
           object("box", "nodes with min - padding <= X <= max + padding, componentwise",
                  {
-                     vec3("min", "lower corner (length)").within(kMaxLength).required(),
-                     vec3("max", "upper corner (length)").within(kMaxLength).required(),
-                     number("padding", "tolerance added on every side (length)").max(kMaxLength).min(0).fallback(defaults.tolerance),
+                     vec3("min", "lower corner (length)").required().within(kMaxLength),
+                     vec3("max", "upper corner (length)").required().within(kMaxLength),
+                     number("padding", "tolerance added on every side (length)").min(0).max(kMaxLength).fallback(defaults.tolerance),
                  }),
           object("plane", "nodes with |n . (X - point)| <= tolerance",
                  {
-                     vec3("point", "a point of the plane (length)").within(kMaxLength).required(),
-                     vec3("normal", "plane normal n, normalized on use").within(kMaxLength).required().nonzero(),
-                     number("tolerance", "distance tolerance (length)").max(kMaxLength).min(0).fallback(defaults.tolerance),
+                     vec3("point", "a point of the plane (length)").required().within(kMaxLength),
+                     vec3("normal", "plane normal n, normalized on use").required().nonzero().within(kMaxLength),
+                     number("tolerance", "distance tolerance (length)").min(0).max(kMaxLength).fallback(defaults.tolerance),
                  }),
           boolean("all", "every node of the body").allowed({true}),
       },
@@ -128,28 +128,28 @@ SchemaNode shape_definition() {
                 {
                     object("box", "box, axis-aligned before the shape's transform",
                            {
-                               vec3("min", "lower corner (length)").within(kMaxLength).required(),
-                               vec3("max", "upper corner, > min componentwise (length)").within(kMaxLength).required(),
+                               vec3("min", "lower corner (length)").required().within(kMaxLength),
+                               vec3("max", "upper corner, > min componentwise (length)").required().within(kMaxLength),
                            }),
                     object("sphere", "ball",
                            {
-                               vec3("center", "center (length)").within(kMaxLength).required(),
-                               number("radius", "radius (length)").max(kMaxLength).required().above(0),
+                               vec3("center", "center (length)").required().within(kMaxLength),
+                               number("radius", "radius (length)").required().above(0).max(kMaxLength),
                            }),
                     object("cylinder", "solid cylinder",
                            {
-                               vec3("base", "center of the base disk (length)").within(kMaxLength).required(),
+                               vec3("base", "center of the base disk (length)").required().within(kMaxLength),
                                vec3("axis", "from the base center to the top center; its length is the height (length)")
                                    .within(kMaxLength)
                                    .required()
                                    .nonzero(),
-                               number("radius", "radius (length)").max(kMaxLength).required().above(0),
+                               number("radius", "radius (length)").required().above(0).max(kMaxLength),
                            }),
                     object("torus",
                            "solid torus, or the segment of one swept through angle_deg (a bent rod with flat "
                            "disk ends)",
                            {
-                               vec3("center", "center of the torus, on its axis (length)").within(kMaxLength).required(),
+                               vec3("center", "center of the torus, on its axis (length)").required().within(kMaxLength),
                                vec3("axis",
                                     "normal of the plane of the centre circle; the sweep turns about it by the "
                                     "right-hand rule")
@@ -160,7 +160,7 @@ SchemaNode shape_definition() {
                                    .max(kMaxLength)
                                    .required()
                                    .above(0),
-                               number("minor_radius", "tube radius, < radius (length)").max(kMaxLength).required().above(0),
+                               number("minor_radius", "tube radius, < radius (length)").required().above(0).max(kMaxLength),
                                number("angle_deg", "swept angle (degrees), from start_direction about axis")
                                    .above(0)
                                    .max(360)
@@ -185,7 +185,7 @@ SchemaNode shape_definition() {
                                               .within(kMaxLength)
                                               .required()
                                               .nonzero(),
-                                          number("angle_deg", "angle (degrees, right-hand rule)").within(kMaxAngle).required(),
+                                          number("angle_deg", "angle (degrees, right-hand rule)").required().within(kMaxAngle),
                                           vec3("center", "a point on the axis (length)")
                                               .within(kMaxLength)
                                               .fallback(vec3_json(defaults.rotation_center)),
@@ -212,8 +212,8 @@ SchemaNode material_schema() {
                             "fiber reinforcement added to the law: psi_f = alpha exp(beta (lambda^2 - 1)) - alpha beta "
                             "lambda^2 + const, lambda^2 = d . C d",
                             {
-                                number("alpha", "fiber stiffness (stress)").max(kMaxPhysical).required().min(0),
-                                number("beta", "fiber exponent (dimensionless)").max(kMaxExponent).required().above(0),
+                                number("alpha", "fiber stiffness (stress)").required().min(0).max(kMaxPhysical),
+                                number("beta", "fiber exponent (dimensionless)").required().above(0).max(kMaxExponent),
                                 vec3("direction", "rest fiber direction d (normalized on use); regions may override it")
                                     .within(kMaxLength)
                                     .nonzero()
@@ -225,22 +225,22 @@ SchemaNode material_schema() {
       {"mooney-rivlin",
        "psi = C1 (I1-3) + C2 (I2-3) + a (I3-1) - (C1 + 2 C2 + a) ln I3",
        {
-           number("C1", "first Mooney-Rivlin constant (stress)").max(kMaxPhysical).required().above(0),
-           number("C2", "second Mooney-Rivlin constant (stress)").max(kMaxPhysical).min(0).fallback(mooney_rivlin.C2),
-           number("a", "compressibility (stress)").max(kMaxPhysical).required().above(0),
+           number("C1", "first Mooney-Rivlin constant (stress)").required().above(0).max(kMaxPhysical),
+           number("C2", "second Mooney-Rivlin constant (stress)").min(0).max(kMaxPhysical).fallback(mooney_rivlin.C2),
+           number("a", "compressibility (stress)").required().above(0).max(kMaxPhysical),
        }},
       {"veronda-westmann",
        "psi = alpha (exp(beta (I1-3)) - 1) - (alpha beta / 2)(I2-3) + a (I3-1) - a ln I3",
        {
-           number("alpha", "stiffness (stress)").max(kMaxPhysical).required().above(0),
-           number("beta", "exponent (dimensionless)").max(kMaxExponent).required().above(0),
-           number("a", "compressibility (stress)").max(kMaxPhysical).required().above(0),
+           number("alpha", "stiffness (stress)").required().above(0).max(kMaxPhysical),
+           number("beta", "exponent (dimensionless)").required().above(0).max(kMaxExponent),
+           number("a", "compressibility (stress)").required().above(0).max(kMaxPhysical),
        }},
       {"neo-hookean",
        "psi = mu/2 (I1-3) - mu ln J + lambda/2 (ln J)^2",
        {
-           number("mu", "shear modulus (stress)").max(kMaxPhysical).required().above(0),
-           number("lambda", "first Lame parameter (stress)").max(kMaxPhysical).required().min(0),
+           number("mu", "shear modulus (stress)").required().above(0).max(kMaxPhysical),
+           number("lambda", "first Lame parameter (stress)").required().min(0).max(kMaxPhysical),
        }},
   };
   return m;
@@ -262,7 +262,7 @@ SchemaNode body_schema() {
                          .non_empty(),
                      object("generate", "mesh primitive solids with Gmsh (OpenCASCADE)",
                             {
-                                number("element_size", "target tet edge length (length)").min(kMinElementSize).max(kMaxLength).required(),
+                                number("element_size", "target tet edge length (length)").required().min(kMinElementSize).max(kMaxLength),
                                 integer("optimize_passes", "Gmsh tet optimization passes")
                                     .min(0)
                                     .max(100)
@@ -293,7 +293,7 @@ SchemaNode body_schema() {
                      vec3("translate", "translation (length)").within(kMaxLength).fallback(vec3_json(mesh_defaults.translate)),
                      object("rotate", "rotation about an axis through the origin",
                             {
-                                vec3("axis", "rotation axis").within(kMaxLength).nonzero().fallback(vec3_json(mesh_defaults.rotate_axis)),
+                                vec3("axis", "rotation axis").nonzero().within(kMaxLength).fallback(vec3_json(mesh_defaults.rotate_axis)),
                                 number("angle_deg", "angle (degrees, right-hand rule)").within(kMaxAngle).fallback(mesh_defaults.rotate_angle),
                             })
                          .fallback(json::object()),
@@ -318,7 +318,7 @@ SchemaNode body_schema() {
                              .max(kMaxPhysical)
                              .min(0)
                              .fallback(region_defaults.density),
-                         vec3("fiber_direction", "overrides the material's fiber direction in this region").within(kMaxLength).nonzero(),
+                         vec3("fiber_direction", "overrides the material's fiber direction in this region").nonzero().within(kMaxLength),
                          number("contact_penalty_scale",
                                 "factor on the contact penalty where this region's surface or tets take part; two "
                                 "parts in contact use the smaller of their factors, so stiff parts (e.g. two rigid "
@@ -395,7 +395,7 @@ SchemaNode contact_schema() {
                 object("", "one pair of bodies (the same name twice for self-contact)",
                        {
                            array("bodies", "two body names", string("", "body name").non_empty()).required().items(2, 2),
-                           number("penalty", "penalty of this pair (force / length^3)").max(kMaxPenalty).above(0),
+                           number("penalty", "penalty of this pair (force / length^3)").above(0).max(kMaxPenalty),
                            boolean("enabled", "false: these bodies do not touch").fallback(true),
                        }))
               .fallback(json::array()),
@@ -417,7 +417,7 @@ SchemaNode boundary_condition_schema() {
       {"planar",
        "the nodes move only in a plane: n . (x - X) = displacement * amplitude(lambda)",
        {
-           vec3("normal", "plane normal n, normalized on use").within(kMaxLength).required().nonzero(),
+           vec3("normal", "plane normal n, normalized on use").required().nonzero().within(kMaxLength),
            number("displacement", "final displacement along n (length)").within(kMaxLength).fallback(defaults.displacement),
            ref("amplitude", "factor applied to the displacement", "amplitude"),
        }},
@@ -435,7 +435,7 @@ SchemaNode loads_schema() {
                                  {
                                      string("name", "name, used in logs").required().non_empty(),
                                      ref("nodes", "the loaded nodes", "node_selector").required(),
-                                     vec3("total_force", "total force over all selected nodes (force)").within(kMaxPhysical).required(),
+                                     vec3("total_force", "total force over all selected nodes (force)").required().within(kMaxPhysical),
                                      ref("amplitude", "factor applied to the force", "amplitude"),
                                  }))
                         .fallback(json::array()),
@@ -454,7 +454,7 @@ SchemaNode solver_schema() {
   return object(
              "solver", "static solver: adaptive load stepping, Newton, line search, linear solver",
              {
-                 integer("increments", "load increments (an output after each)").max(kMaxIncrements).min(1).fallback(stepping.increments),
+                 integer("increments", "load increments (an output after each)").min(1).max(kMaxIncrements).fallback(stepping.increments),
                  string("predictor", "initial guess of each step: tangent (linearized response from the last factorization), two-point (the seed's extrapolation of the last two states) or none")
                      .allowed({predictor_name(Predictor::None), predictor_name(Predictor::TwoPoint),
                                predictor_name(Predictor::Tangent)})
@@ -463,7 +463,7 @@ SchemaNode solver_schema() {
                      .min(kMinStep)
                      .max(1)
                      .fallback(stepping.min_step),
-                 number("growth", "step growth factor after an easy step").max(kMaxGrowth).min(1).fallback(stepping.growth),
+                 number("growth", "step growth factor after an easy step").min(1).max(kMaxGrowth).fallback(stepping.growth),
                  integer("easy_iterations", "Newton iterations at or below which a step counts as easy")
                      .max(kMaxIterations)
                      .min(0)
@@ -521,7 +521,7 @@ SchemaNode solver_schema() {
                                 .max(kMaxLinearIterations)
                                 .min(1)
                                 .fallback(linear.max_iterations),
-                            integer("gmres_restart", "GMRES restart length").max(kMaxRestart).min(1).fallback(linear.gmres_restart),
+                            integer("gmres_restart", "GMRES restart length").min(1).max(kMaxRestart).fallback(linear.gmres_restart),
                         })
                      .fallback(json::object()),
              })
@@ -555,7 +555,7 @@ SchemaNode dynamics_schema() {
                            "a step halved below this fails the run (time); default 1e-6 of the first step")
                         .min(kMinTime)
                         .max(kMaxTime),
-                    number("growth", "step growth after an easy step").max(kMaxGrowth).min(1).fallback(o.growth),
+                    number("growth", "step growth after an easy step").min(1).max(kMaxGrowth).fallback(o.growth),
                     integer("easy_iterations", "Newton iterations at or below which a step counts as easy")
                         .max(kMaxIterations)
                         .min(0)
@@ -583,7 +583,7 @@ SchemaNode output_schema() {
   return object("output", "what is written",
                 {
                     boolean("vtu", "write a .vtu per output step and a .pvd series").fallback(defaults.vtu),
-                    integer("every", "write every n-th increment (the last one always)").max(kMaxIncrements).min(1).fallback(defaults.every),
+                    integer("every", "write every n-th increment (the last one always)").min(1).max(kMaxIncrements).fallback(defaults.every),
                 })
       .fallback(json::object());
 }
