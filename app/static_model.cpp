@@ -80,11 +80,16 @@ StaticModel make_static_model(const fem::Problem& problem, const solver::StaticS
 
   const Vector3 extent = mesh.rest.colwise().maxCoeff() - mesh.rest.colwise().minCoeff();
   const double length = std::max(extent.norm(), 1e-300);
-  double shear_modulus = 0;
+  // The reference force sets the round-off floor of Newton's residual. Round-off in the elastic
+  // forces scales with the stiffest modulus, the bulk modulus of a nearly incompressible law
+  // (a = 1e6 against C1 = 0.2): scaled by the shear modulus alone, the floor lay below the
+  // round-off of a stress-free rest state, which then failed as "the initial state has no
+  // equilibrium" (Newton could not reduce a residual that is pure round-off).
+  double modulus = 0;
   for (const auto& law : problem.region_material)
-    if (law) shear_modulus = std::max(shear_modulus, law->initial_shear_modulus());
+    if (law) modulus = std::max({modulus, law->initial_shear_modulus(), law->initial_bulk_modulus()});
   model.setup.characteristic_length = length;
-  model.setup.reference_force = (shear_modulus > 0 ? shear_modulus : 1.0) * length * length;
+  model.setup.reference_force = (modulus > 0 ? modulus : 1.0) * length * length;
 
   if (options.newton.quasi_viscosity > 0) {
     // D_a = eta * (volume of the tets around node a)^(1/3): proportional to the local element size.

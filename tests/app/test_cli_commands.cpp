@@ -176,6 +176,26 @@ TEST(Cli, SuccessfulRunWritesEveryOutputAtomically) {
   EXPECT_EQ(summary.at("scene"), "small-block");
 }
 
+// A nearly incompressible block (bulk/shear ~ 1e6) at rest, with nothing to move it: its rest
+// state was reported as "the initial state (lambda = 0) has no equilibrium" because the
+// round-off of its elastic forces lay above a residual floor scaled by the shear modulus alone.
+TEST(Cli, AStressFreeRestStateIsSolvedWithZeroDisplacement) {
+  ScratchDirectory directory;
+  const fs::path scene = directory / "scene.json";
+  const fs::path output = directory / "out";
+  json rest = small_block_scene();
+  rest["materials"]["rubber"] = {{"law", "mooney-rivlin"}, {"C1", 0.2}, {"a", 1e6}};
+  rest["bodies"][0]["mesh"]["generate"]["element_size"] = 2.0;
+  rest["boundary_conditions"].erase(1);  // no motion, no load
+  rest["output"]["vtu"] = false;
+  write_text(scene, rest.dump(2));
+  const CommandResult result = run_scene_file(scene, output, directory);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const json summary = json::parse(read_text(output / "summary.json"));
+  EXPECT_EQ(summary.at("success"), true);
+  EXPECT_EQ(summary.at("lambda_reached"), 1.0);
+}
+
 // `sinew study convergence` on a coarse, short variant of examples/convergence-corner.json.
 json coarse_convergence_scene() {
   json scene = json::parse(read_text(kSource / "examples" / "convergence-corner.json"));

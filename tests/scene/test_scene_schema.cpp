@@ -156,7 +156,7 @@ TEST(SceneSchema, ReferenceHasATablePerObject) {
     EXPECT_NE(markdown.find(heading), std::string::npos) << heading;
   }
   EXPECT_THAT(markdown, ::testing::HasSubstr(
-                            "| `increments` | integer | `10` | >= 1 | load increments (an output after each) |"));
+                            "| `increments` | integer | `10` | >= 1; <= 1e+06 | load increments (an output after each) |"));
   EXPECT_THAT(markdown, ::testing::HasSubstr("With `law` = `\"mooney-rivlin\"`"));
 }
 

@@ -13,6 +13,7 @@
 #include "sinew/material/material_spec.hpp"
 #include "sinew/mesh/generate.hpp"
 #include "sinew/mesh/read_msh.hpp"
+#include "sinew/scene/resource_estimate.hpp"
 #include "sinew/scene/schema.hpp"
 
 namespace sinew::scene {
@@ -71,6 +72,7 @@ class ProblemBuilder {
   explicit ProblemBuilder(const SceneConfig& scene) : scene_(scene) {}
 
   fem::Problem build() {
+    check_resource_limits(scene_);  // before any Gmsh call
     std::vector<PlacedBody> bodies;
     for (std::size_t b = 0; b < scene_.bodies.size(); ++b) bodies.push_back(place_body(b));
     throw_if_errors();
@@ -81,7 +83,10 @@ class ProblemBuilder {
     const Index num_nodes = problem_.mesh.num_nodes();
     prescribed_by_.assign(static_cast<std::size_t>(num_nodes), -1);
     rigid_body_of_.assign(static_cast<std::size_t>(num_nodes), -1);
-    for (std::size_t r = 0; r < problem_.rigid_bodies.size(); ++r) mark_rigid_members(r);
+    for (std::size_t r = 0; r < problem_.rigid_bodies.size(); ++r) {
+      mark_rigid_members(r);
+      check_rigid_name(r);
+    }
     throw_if_errors();
 
     for (std::size_t i = 0; i < scene_.boundary_conditions.size(); ++i) add_boundary_condition(i, bodies);
@@ -296,6 +301,25 @@ class ProblemBuilder {
                                  problem_.rigid_bodies[static_cast<std::size_t>(other)].name + "\", e.g. node " +
                                  std::to_string(node) + " at " + show_point(problem_.mesh.rest, node) +
                                  "; a node can follow only one rigid body: make them one region or keep them apart");
+    }
+  }
+
+  /// A rigid region a "*" entry covers in a mesh file is known only now: its name must not be a
+  /// condition's or force's (their reaction columns "<name>.fx", ... would clash; the load-time
+  /// check, scene_names.hpp, covers the regions it can see).
+  void check_rigid_name(std::size_t r) {
+    const std::string& name = problem_.rigid_bodies[r].name;
+    const auto clash = [&](const std::string& path, const char* group) {
+      error(path, std::string("the ") + group + " name \"" + name + "\" is also the name of the rigid region at " +
+                      rigid_paths_[r] + "; their reaction columns (<name>.fx, ...) would clash: rename one");
+    };
+    for (std::size_t i = 0; i < scene_.boundary_conditions.size(); ++i) {
+      if (scene_.boundary_conditions[i].name == name) {
+        clash(json_path_key(json_path_index("boundary_conditions", i), "name"), "boundary condition");
+      }
+    }
+    for (std::size_t i = 0; i < scene_.loads.forces.size(); ++i) {
+      if (scene_.loads.forces[i].name == name) clash(json_path_key(json_path_index("loads.forces", i), "name"), "force");
     }
   }
 

@@ -21,6 +21,9 @@ namespace sinew::scene {
 /// - a node prescribed by two fixed/prescribed boundary conditions;
 /// - a prescribed or planar node that belongs to a rigid region (prescribe the rigid region);
 /// - two rigid regions that share nodes (a node can follow only one rigid body);
+/// - a generated body whose estimated tet count exceeds scene.limits.max_tets (checked before
+///   any meshing; resource_estimate.hpp);
+/// - a condition or force named like a rigid region of a mesh file (scene_names.hpp);
 /// and the mesh readers' and material factory's errors.
 fem::Problem build_problem(const SceneConfig& scene);
 

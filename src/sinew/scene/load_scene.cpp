@@ -6,13 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <set>
-#include <sstream>
 
 #include "sinew/core/error.hpp"
+#include "sinew/scene/scene_names.hpp"
 #include "sinew/scene/scene_schema.hpp"
+#include "sinew/scene/scene_text.hpp"
 
 namespace sinew::scene {
 
@@ -107,9 +107,18 @@ class SceneReader {
 
     if (scene.contains("contact")) config.contact = read_contact(scene.at("contact"), config);
     config.solver = read_solver(scene.at("solver"));
-    if (scene.contains("dynamics")) config.dynamics = read_dynamics(scene.at("dynamics"));
+    if (scene.contains("dynamics")) {
+      config.dynamics = read_dynamics(scene.at("dynamics"));
+      // Each output writes a VTU of the whole mesh: 1e6 of them is already far too many.
+      const double outputs = config.dynamics.options.end_time / config.dynamics.options.output_interval;
+      if (outputs > 1e6) {
+        error("dynamics.output_interval", "gives " + format_number(std::ceil(outputs)) +
+                                              " outputs over end_time; at most 1e+06 are allowed");
+      }
+    }
     config.output.vtu = scene.at("output").at("vtu").get<bool>();
     config.output.every = scene.at("output").at("every").get<int>();
+    for (std::string& clash : output_name_clashes(config)) errors.push_back(std::move(clash));
     return config;
   }
 
@@ -528,52 +537,6 @@ class SceneReader {
   }
 };
 
-/// Tracks the JSON path during parsing to report keys an object repeats (nlohmann keeps the last
-/// one silently).
-class DuplicateKeyFinder {
- public:
-  std::vector<std::string> errors;
-
-  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start: frames_.push_back({false, value_path(), {}, {}, 0}); break;
-      case json::parse_event_t::array_start: frames_.push_back({true, value_path(), {}, {}, 0}); break;
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        if (!frames_.empty()) frames_.pop_back();
-        break;
-      case json::parse_event_t::key: {
-        Frame& frame = frames_.back();
-        frame.current_key = parsed.get<std::string>();
-        if (!frame.keys.insert(frame.current_key).second) {
-          errors.push_back(json_path_key(frame.path, frame.current_key) + ": duplicate key");
-        }
-        break;
-      }
-      case json::parse_event_t::value: value_path(); break;
-    }
-    return true;
-  }
-
- private:
-  struct Frame {
-    bool is_array;
-    std::string path;
-    std::set<std::string> keys;
-    std::string current_key;
-    std::size_t next_index;
-  };
-  std::vector<Frame> frames_;
-
-  /// The path of the value that starts now (advances the parent array's index).
-  std::string value_path() {
-    if (frames_.empty()) return "";
-    Frame& parent = frames_.back();
-    if (parent.is_array) return json_path_index(parent.path, parent.next_index++);
-    return json_path_key(parent.path, parent.current_key);
-  }
-};
-
 }  // namespace
 
 SceneConfig parse_scene(const json& scene, const std::string& base_directory) {
@@ -586,39 +549,8 @@ SceneConfig parse_scene(const json& scene, const std::string& base_directory) {
 }
 
 SceneConfig load_scene_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError("scene file not found: " + path);
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (!in.good() && !in.eof()) throw InputError("cannot read scene file " + path);
-  const std::string text = buffer.str();
-
-  DuplicateKeyFinder duplicates;
-  json scene;
-  try {
-    scene = json::parse(text, std::ref(duplicates));
-  } catch (const json::parse_error& e) {
-    // Line and column where parsing stopped, counted as nlohmann's lexer counts them (e.byte
-    // characters read, the end of input included; a newline starts the next line at column 0),
-    // so they agree with the position in its message.
-    std::size_t line = 1, column = 0;
-    for (std::size_t i = 0; i < e.byte; ++i) {
-      ++column;
-      if (i < text.size() && text[i] == '\n') {
-        ++line;
-        column = 0;
-      }
-    }
-    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": malformed JSON: " + e.what());
-  } catch (const json::exception& e) {
-    // e.g. out_of_range 406: a number too large for a double ("1e999"): JSON has no infinity.
-    throw InputError(path + ": malformed JSON: " + e.what() +
-                     " (numbers must be finite and within the range of a double)");
-  }
+  const json scene = parse_scene_json(read_scene_text(path), path);
   const std::string where = "\n(in scene file " + path + ")";
-  if (!duplicates.errors.empty()) throw InputError(join_lines(duplicates.errors) + where);
-
   const std::string directory = std::filesystem::absolute(path).parent_path().lexically_normal().string();
   try {
     return parse_scene(scene, directory);

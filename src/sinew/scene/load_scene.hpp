@@ -13,7 +13,8 @@
 namespace sinew::scene {
 
 /// Reads, validates and converts a scene file. Relative mesh paths resolve against the file's
-/// directory. Throws InputError: when the file is missing or unreadable (naming the path); when
+/// directory. Throws InputError: when the file is missing, unreadable, not a regular file,
+/// larger than 16 MiB or nested deeper than 64 levels (scene_text.hpp; naming the path); when
 /// the JSON is malformed ("<file>:<line>:<column>: malformed JSON: <parser message>"); when an
 /// object repeats a key; and for every error parse_scene reports, with a last line naming the
 /// file.

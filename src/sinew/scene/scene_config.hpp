@@ -132,6 +132,14 @@ struct OutputConfig {
   int every = 1;          ///< write every n-th increment (the last one always)
 };
 
+/// Limits on what a scene may ask of the machine. Not read from the scene file: the command line
+/// sets them (a scene cannot lift its own limits).
+struct ResourceLimits {
+  /// Largest estimated tet count of one generated body (resource_estimate.hpp): about 6 GB of
+  /// memory at the default; the examples need at most ~1e5 (knee at 9 mm: ~37k tets).
+  double max_tets = 3e6;
+};
+
 struct SceneConfig {
   std::string name;
   std::string description;
@@ -145,6 +153,7 @@ struct SceneConfig {
   solver::StaticSolverOptions solver;
   DynamicsConfig dynamics;
   OutputConfig output;
+  ResourceLimits limits;  ///< set by the command line, not the scene file
 };
 
 }  // namespace sinew::scene

@@ -3,12 +3,11 @@
 
 #include "sinew/scene/scene_schema.hpp"
 
-#include <sstream>
-
 #include "sinew/fem/motion.hpp"
 #include "sinew/material/material_spec.hpp"
 #include "sinew/mesh/generate.hpp"
 #include "sinew/scene/scene_config.hpp"
+#include "sinew/scene/schema_builder.hpp"
 
 namespace sinew::scene {
 
@@ -42,104 +41,37 @@ const char* linear_solver_name(solver::LinearSolverOptions::Kind kind) {
 
 namespace {
 
-// ---------------------------------------------------------------- builders
-// Small fluent helpers so the schema below reads like the reference it produces.
+using namespace schema_builder;  // NOLINT(google-build-using-namespace)
 
-struct Key {
-  SchemaNode node;
-
-  Key(SchemaType type, std::string key, std::string doc) {
-    node.type = type;
-    node.key = std::move(key);
-    node.doc = std::move(doc);
-  }
-  Key& required() {
-    node.required = true;
-    return *this;
-  }
-  Key& fallback(json value) {
-    node.default_value = std::move(value);
-    return *this;
-  }
-  Key& min(double value, bool exclusive = false) {
-    node.minimum = SchemaBound{value, exclusive};
-    return *this;
-  }
-  Key& max(double value, bool exclusive = false) {
-    node.maximum = SchemaBound{value, exclusive};
-    return *this;
-  }
-  Key& above(double value) { return min(value, true); }
-  Key& below(double value) { return max(value, true); }
-  Key& allowed(std::vector<json> values) {
-    node.allowed = std::move(values);
-    return *this;
-  }
-  Key& non_empty() {
-    node.non_empty = true;
-    return *this;
-  }
-  Key& nonzero() {
-    node.nonzero = true;
-    return *this;
-  }
-  Key& items(std::size_t min_count, std::size_t max_count = std::numeric_limits<std::size_t>::max()) {
-    node.min_items = min_count;
-    node.max_items = max_count;
-    return *this;
-  }
-  operator SchemaNode() const { return node; }  // NOLINT(google-explicit-constructor)
-};
-
-Key number(std::string key, std::string doc) { return Key(SchemaType::Number, std::move(key), std::move(doc)); }
-Key integer(std::string key, std::string doc) { return Key(SchemaType::Integer, std::move(key), std::move(doc)); }
-Key string(std::string key, std::string doc) { return Key(SchemaType::String, std::move(key), std::move(doc)); }
-Key boolean(std::string key, std::string doc) { return Key(SchemaType::Boolean, std::move(key), std::move(doc)); }
-Key vec3(std::string key, std::string doc) { return Key(SchemaType::Vec3, std::move(key), std::move(doc)); }
-
-Key object(std::string key, std::string doc, std::vector<SchemaNode> properties) {
-  Key k(SchemaType::Object, std::move(key), std::move(doc));
-  k.node.properties = std::move(properties);
-  return k;
-}
-
-Key one_of(std::string key, std::string doc, std::vector<SchemaNode> properties, std::vector<std::string> alternatives) {
-  Key k(SchemaType::OneOf, std::move(key), std::move(doc));
-  k.node.properties = std::move(properties);
-  k.node.one_of = std::move(alternatives);
-  return k;
-}
-
-Key array(std::string key, std::string doc, SchemaNode element) {
-  Key k(SchemaType::Array, std::move(key), std::move(doc));
-  k.node.items = {std::move(element)};
-  return k;
-}
-
-Key map(std::string key, std::string doc, SchemaNode value) {
-  Key k(SchemaType::Map, std::move(key), std::move(doc));
-  k.node.items = {std::move(value)};
-  return k;
-}
-
-Key either(std::string key, std::string doc, std::vector<SchemaNode> alternatives) {
-  Key k(SchemaType::Either, std::move(key), std::move(doc));
-  k.node.items = std::move(alternatives);
-  return k;
-}
-
-Key ref(std::string key, std::string doc, std::string definition) {
-  Key k(SchemaType::Ref, std::move(key), std::move(doc));
-  k.node.ref = std::move(definition);
-  return k;
-}
-
-json vec3_json(const Vector3& v) { return json::array({v.x(), v.y(), v.z()}); }
+// ---------------------------------------------------------------- bounds
+// Every number is bounded, in the scene's own units, so that the products the solver forms
+// (modulus x strain, penalty x depth^2 x area, density x gravity x volume, ...) stay finite and
+// Gmsh's geometry well conditioned; real scenes lie orders of magnitude inside
+// (docs/scene-reference.md, Conventions: Bounds).
+constexpr double kMaxLength = 1e6;         ///< coordinates, lengths, displacements, direction components (length)
+constexpr double kMinElementSize = 1e-9;   ///< smallest element_size (length); the tet estimate bounds it further
+constexpr double kMaxPhysical = 1e12;      ///< moduli, stresses, densities, gravity, forces, damping (their units)
+constexpr double kMaxPenalty = 1e15;       ///< contact penalty (force / length^3): E / h of 1 TPa over 1 mm, in SI
+constexpr double kMaxScale = 1e6;          ///< contact penalty factors (dimensionless)
+constexpr double kMaxExponent = 1e3;       ///< exponents beta of exp(beta (...)) (dimensionless)
+constexpr double kMaxAngle = 1e5;          ///< angles (degrees): about 280 turns
+constexpr double kMaxFactor = 1e6;         ///< amplitude points: lambda and factor (dimensionless)
+constexpr double kMinStep = 1e-12;         ///< smallest min_step (fraction of an increment): 40 halvings
+constexpr double kMaxGrowth = 1e3;         ///< step growth factors
+constexpr double kMinTolerance = 1e-16;    ///< relative tolerances: about the double's epsilon
+constexpr double kMinTime = 1e-15;         ///< time steps and intervals (time)
+constexpr double kMaxTime = 1e12;          ///< end time and time steps (time)
+constexpr int kMaxIncrements = 1000000;    ///< load increments, output.every
+constexpr int kMaxIterations = 100000;     ///< Newton iteration counts
+constexpr int kMaxCuts = 1000;             ///< failed attempts counted before a snap-through attempt
+constexpr int kMaxHalvings = 200;          ///< line-search halvings (2^-200 ~ 1e-60)
+constexpr int kMaxLinearIterations = 1000000;  ///< iterative linear solvers' iterations
+constexpr int kMaxRestart = 1000;          ///< GMRES restart length (that many vectors of every unknown)
 
 // ---------------------------------------------------------------- definitions
 
 SchemaNode amplitude_definition() {
-  SchemaNode pair = array("", "[lambda, factor]", number("", "lambda or factor")).items(2, 2);
+  SchemaNode pair = array("", "[lambda, factor]", number("", "lambda or factor").within(kMaxFactor)).items(2, 2);
   return array("", "Piecewise-linear factor through [lambda, factor] points, lambda strictly increasing, held "
                    "constant outside them; when omitted the factor ramps as a(lambda) = lambda",
                pair)
@@ -152,12 +84,12 @@ SchemaNode motion_definition() {
                 "A rigid motion reached at the end of the load (lambda = 1), scaled by its amplitude: "
                 "x = R(a angle) (X - point) + point + a translation",
                 {
-                    vec3("translation", "final translation (length)").fallback(vec3_json(defaults.translation)),
+                    vec3("translation", "final translation (length)").within(kMaxLength).fallback(vec3_json(defaults.translation)),
                     object("rotation", "final rotation about an axis through a point (none when omitted)",
                            {
-                               vec3("axis", "rotation axis direction, normalized on use").required().nonzero(),
-                               vec3("point", "a point on the axis (length)").fallback(vec3_json(defaults.axis_point)),
-                               number("angle_deg", "final angle (degrees, right-hand rule)").required(),
+                               vec3("axis", "rotation axis direction, normalized on use").required().nonzero().within(kMaxLength),
+                               vec3("point", "a point on the axis (length)").within(kMaxLength).fallback(vec3_json(defaults.axis_point)),
+                               number("angle_deg", "final angle (degrees, right-hand rule)").required().within(kMaxAngle),
                            }),
                     ref("amplitude", "factor a(lambda) applied to angle and translation", "amplitude"),
                 });
@@ -173,15 +105,15 @@ SchemaNode node_selector_definition() {
           string("region", "the nodes of the tets of this mesh region").non_empty(),
           object("box", "nodes with min - padding <= X <= max + padding, componentwise",
                  {
-                     vec3("min", "lower corner (length)").required(),
-                     vec3("max", "upper corner (length)").required(),
-                     number("padding", "tolerance added on every side (length)").min(0).fallback(defaults.tolerance),
+                     vec3("min", "lower corner (length)").required().within(kMaxLength),
+                     vec3("max", "upper corner (length)").required().within(kMaxLength),
+                     number("padding", "tolerance added on every side (length)").min(0).max(kMaxLength).fallback(defaults.tolerance),
                  }),
           object("plane", "nodes with |n . (X - point)| <= tolerance",
                  {
-                     vec3("point", "a point of the plane (length)").required(),
-                     vec3("normal", "plane normal n, normalized on use").required().nonzero(),
-                     number("tolerance", "distance tolerance (length)").min(0).fallback(defaults.tolerance),
+                     vec3("point", "a point of the plane (length)").required().within(kMaxLength),
+                     vec3("normal", "plane normal n, normalized on use").required().nonzero().within(kMaxLength),
+                     number("tolerance", "distance tolerance (length)").min(0).max(kMaxLength).fallback(defaults.tolerance),
                  }),
           boolean("all", "every node of the body").allowed({true}),
       },
@@ -196,36 +128,39 @@ SchemaNode shape_definition() {
                 {
                     object("box", "box, axis-aligned before the shape's transform",
                            {
-                               vec3("min", "lower corner (length)").required(),
-                               vec3("max", "upper corner, > min componentwise (length)").required(),
+                               vec3("min", "lower corner (length)").required().within(kMaxLength),
+                               vec3("max", "upper corner, > min componentwise (length)").required().within(kMaxLength),
                            }),
                     object("sphere", "ball",
                            {
-                               vec3("center", "center (length)").required(),
-                               number("radius", "radius (length)").required().above(0),
+                               vec3("center", "center (length)").required().within(kMaxLength),
+                               number("radius", "radius (length)").required().above(0).max(kMaxLength),
                            }),
                     object("cylinder", "solid cylinder",
                            {
-                               vec3("base", "center of the base disk (length)").required(),
+                               vec3("base", "center of the base disk (length)").required().within(kMaxLength),
                                vec3("axis", "from the base center to the top center; its length is the height (length)")
+                                   .within(kMaxLength)
                                    .required()
                                    .nonzero(),
-                               number("radius", "radius (length)").required().above(0),
+                               number("radius", "radius (length)").required().above(0).max(kMaxLength),
                            }),
                     object("torus",
                            "solid torus, or the segment of one swept through angle_deg (a bent rod with flat "
                            "disk ends)",
                            {
-                               vec3("center", "center of the torus, on its axis (length)").required(),
+                               vec3("center", "center of the torus, on its axis (length)").required().within(kMaxLength),
                                vec3("axis",
                                     "normal of the plane of the centre circle; the sweep turns about it by the "
                                     "right-hand rule")
+                                   .within(kMaxLength)
                                    .required()
                                    .nonzero(),
                                number("radius", "major radius: of the circle through the tube centres (length)")
+                                   .max(kMaxLength)
                                    .required()
                                    .above(0),
-                               number("minor_radius", "tube radius, < radius (length)").required().above(0),
+                               number("minor_radius", "tube radius, < radius (length)").required().above(0).max(kMaxLength),
                                number("angle_deg", "swept angle (degrees), from start_direction about axis")
                                    .above(0)
                                    .max(360)
@@ -234,6 +169,7 @@ SchemaNode shape_definition() {
                                     "direction from the center to the centre of the tube's first end (its part "
                                     "perpendicular to axis counts); default: +x projected onto the torus plane, or +y "
                                     "projected when the axis is along x")
+                                   .within(kMaxLength)
                                    .nonzero(),
                            }),
                     array("union", "all shapes fused", ref("", "", "shape")).items(1),
@@ -246,13 +182,16 @@ SchemaNode shape_definition() {
                                object("rotate", "rotation about an axis through a point (none when omitted)",
                                       {
                                           vec3("axis", "rotation axis direction, normalized on use")
+                                              .within(kMaxLength)
                                               .required()
                                               .nonzero(),
-                                          number("angle_deg", "angle (degrees, right-hand rule)").required(),
+                                          number("angle_deg", "angle (degrees, right-hand rule)").required().within(kMaxAngle),
                                           vec3("center", "a point on the axis (length)")
+                                              .within(kMaxLength)
                                               .fallback(vec3_json(defaults.rotation_center)),
                                       }),
                                vec3("translate", "translation, applied after the rotation (length)")
+                                   .within(kMaxLength)
                                    .fallback(vec3_json(defaults.translation)),
                            }),
                 },
@@ -273,9 +212,10 @@ SchemaNode material_schema() {
                             "fiber reinforcement added to the law: psi_f = alpha exp(beta (lambda^2 - 1)) - alpha beta "
                             "lambda^2 + const, lambda^2 = d . C d",
                             {
-                                number("alpha", "fiber stiffness (stress)").required().min(0),
-                                number("beta", "fiber exponent (dimensionless)").required().above(0),
+                                number("alpha", "fiber stiffness (stress)").required().min(0).max(kMaxPhysical),
+                                number("beta", "fiber exponent (dimensionless)").required().above(0).max(kMaxExponent),
                                 vec3("direction", "rest fiber direction d (normalized on use); regions may override it")
+                                    .within(kMaxLength)
                                     .nonzero()
                                     .fallback(vec3_json(fiber.direction)),
                             }),
@@ -285,22 +225,22 @@ SchemaNode material_schema() {
       {"mooney-rivlin",
        "psi = C1 (I1-3) + C2 (I2-3) + a (I3-1) - (C1 + 2 C2 + a) ln I3",
        {
-           number("C1", "first Mooney-Rivlin constant (stress)").required().above(0),
-           number("C2", "second Mooney-Rivlin constant (stress)").min(0).fallback(mooney_rivlin.C2),
-           number("a", "compressibility (stress)").required().above(0),
+           number("C1", "first Mooney-Rivlin constant (stress)").required().above(0).max(kMaxPhysical),
+           number("C2", "second Mooney-Rivlin constant (stress)").min(0).max(kMaxPhysical).fallback(mooney_rivlin.C2),
+           number("a", "compressibility (stress)").required().above(0).max(kMaxPhysical),
        }},
       {"veronda-westmann",
        "psi = alpha (exp(beta (I1-3)) - 1) - (alpha beta / 2)(I2-3) + a (I3-1) - a ln I3",
        {
-           number("alpha", "stiffness (stress)").required().above(0),
-           number("beta", "exponent (dimensionless)").required().above(0),
-           number("a", "compressibility (stress)").required().above(0),
+           number("alpha", "stiffness (stress)").required().above(0).max(kMaxPhysical),
+           number("beta", "exponent (dimensionless)").required().above(0).max(kMaxExponent),
+           number("a", "compressibility (stress)").required().above(0).max(kMaxPhysical),
        }},
       {"neo-hookean",
        "psi = mu/2 (I1-3) - mu ln J + lambda/2 (ln J)^2",
        {
-           number("mu", "shear modulus (stress)").required().above(0),
-           number("lambda", "first Lame parameter (stress)").required().min(0),
+           number("mu", "shear modulus (stress)").required().above(0).max(kMaxPhysical),
+           number("lambda", "first Lame parameter (stress)").required().min(0).max(kMaxPhysical),
        }},
   };
   return m;
@@ -322,7 +262,7 @@ SchemaNode body_schema() {
                          .non_empty(),
                      object("generate", "mesh primitive solids with Gmsh (OpenCASCADE)",
                             {
-                                number("element_size", "target tet edge length (length)").required().above(0),
+                                number("element_size", "target tet edge length (length)").required().min(kMinElementSize).max(kMaxLength),
                                 integer("optimize_passes", "Gmsh tet optimization passes")
                                     .min(0)
                                     .max(100)
@@ -350,11 +290,11 @@ SchemaNode body_schema() {
               .required(),
           object("transform", "rigid placement of the mesh: rotate about the origin, then translate",
                  {
-                     vec3("translate", "translation (length)").fallback(vec3_json(mesh_defaults.translate)),
+                     vec3("translate", "translation (length)").within(kMaxLength).fallback(vec3_json(mesh_defaults.translate)),
                      object("rotate", "rotation about an axis through the origin",
                             {
-                                vec3("axis", "rotation axis").nonzero().fallback(vec3_json(mesh_defaults.rotate_axis)),
-                                number("angle_deg", "angle (degrees, right-hand rule)").fallback(mesh_defaults.rotate_angle),
+                                vec3("axis", "rotation axis").nonzero().within(kMaxLength).fallback(vec3_json(mesh_defaults.rotate_axis)),
+                                number("angle_deg", "angle (degrees, right-hand rule)").within(kMaxAngle).fallback(mesh_defaults.rotate_angle),
                             })
                          .fallback(json::object()),
                  })
@@ -375,13 +315,15 @@ SchemaNode body_schema() {
                                            {ref("prescribed", "the motion", "motion")}, {"prescribed"}),
                                 }),
                          number("density", "mass per rest volume (mass / length^3)")
+                             .max(kMaxPhysical)
                              .min(0)
                              .fallback(region_defaults.density),
-                         vec3("fiber_direction", "overrides the material's fiber direction in this region").nonzero(),
+                         vec3("fiber_direction", "overrides the material's fiber direction in this region").nonzero().within(kMaxLength),
                          number("contact_penalty_scale",
                                 "factor on the contact penalty where this region's surface or tets take part; two "
                                 "parts in contact use the smaller of their factors, so stiff parts (e.g. two rigid "
                                 "bones) can meet with a stiffer penalty than soft tissue against either")
+                             .max(kMaxScale)
                              .above(0)
                              .fallback(region_defaults.contact_penalty_scale),
                      }))
@@ -440,10 +382,12 @@ SchemaNode contact_schema() {
           number("penalty",
                  "penalty for every pair of bodies (force / length^3: a penetration g meets a pressure of about "
                  "penalty * g); default: penalty_scale * E / h per pair of bodies")
+              .max(kMaxPenalty)
               .above(0),
           number("penalty_scale",
                  "automatic penalty = penalty_scale * E / h, E the smaller initial Young's modulus of the two bodies "
                  "(rigid bodies take the other's), h the smaller mean boundary edge length")
+              .max(kMaxScale)
               .above(0)
               .fallback(defaults.penalty_scale),
           boolean("self_contact", "a body's surface may also penetrate the same body").fallback(defaults.self_contact),
@@ -451,7 +395,7 @@ SchemaNode contact_schema() {
                 object("", "one pair of bodies (the same name twice for self-contact)",
                        {
                            array("bodies", "two body names", string("", "body name").non_empty()).required().items(2, 2),
-                           number("penalty", "penalty of this pair (force / length^3)").above(0),
+                           number("penalty", "penalty of this pair (force / length^3)").above(0).max(kMaxPenalty),
                            boolean("enabled", "false: these bodies do not touch").fallback(true),
                        }))
               .fallback(json::array()),
@@ -473,8 +417,8 @@ SchemaNode boundary_condition_schema() {
       {"planar",
        "the nodes move only in a plane: n . (x - X) = displacement * amplitude(lambda)",
        {
-           vec3("normal", "plane normal n, normalized on use").required().nonzero(),
-           number("displacement", "final displacement along n (length)").fallback(defaults.displacement),
+           vec3("normal", "plane normal n, normalized on use").required().nonzero().within(kMaxLength),
+           number("displacement", "final displacement along n (length)").within(kMaxLength).fallback(defaults.displacement),
            ref("amplitude", "factor applied to the displacement", "amplitude"),
        }},
   };
@@ -485,13 +429,13 @@ SchemaNode loads_schema() {
   const LoadsConfig defaults;
   return object("loads", "external loads",
                 {
-                    vec3("gravity", "gravitational acceleration (length / time^2)").fallback(vec3_json(defaults.gravity)),
+                    vec3("gravity", "gravitational acceleration (length / time^2)").within(kMaxPhysical).fallback(vec3_json(defaults.gravity)),
                     array("forces", "forces spread equally over node sets",
                           object("", "a force",
                                  {
                                      string("name", "name, used in logs").required().non_empty(),
                                      ref("nodes", "the loaded nodes", "node_selector").required(),
-                                     vec3("total_force", "total force over all selected nodes (force)").required(),
+                                     vec3("total_force", "total force over all selected nodes (force)").required().within(kMaxPhysical),
                                      ref("amplitude", "factor applied to the force", "amplitude"),
                                  }))
                         .fallback(json::array()),
@@ -510,46 +454,52 @@ SchemaNode solver_schema() {
   return object(
              "solver", "static solver: adaptive load stepping, Newton, line search, linear solver",
              {
-                 integer("increments", "load increments (an output after each)").min(1).fallback(stepping.increments),
+                 integer("increments", "load increments (an output after each)").min(1).max(kMaxIncrements).fallback(stepping.increments),
                  string("predictor", "initial guess of each step: tangent (linearized response from the last factorization), two-point (the seed's extrapolation of the last two states) or none")
                      .allowed({predictor_name(Predictor::None), predictor_name(Predictor::TwoPoint),
                                predictor_name(Predictor::Tangent)})
                      .fallback(predictor_name(stepping.predictor)),
                  number("min_step", "smallest load step when halving, as a fraction of an increment")
-                     .above(0)
+                     .min(kMinStep)
                      .max(1)
                      .fallback(stepping.min_step),
-                 number("growth", "step growth factor after an easy step").min(1).fallback(stepping.growth),
+                 number("growth", "step growth factor after an easy step").min(1).max(kMaxGrowth).fallback(stepping.growth),
                  integer("easy_iterations", "Newton iterations at or below which a step counts as easy")
+                     .max(kMaxIterations)
                      .min(0)
                      .fallback(stepping.easy_iterations),
                  integer("snap_through_after_cuts", "after this many failed attempts in a row, the next attempt gets snap_through_iterations Newton iterations (passes limit points: a buckle or a fold snapping through, where no smaller step helps); 0 = off")
+                     .max(kMaxCuts)
                      .min(0)
                      .fallback(stepping.snap_through_after_cuts),
                  integer("snap_through_iterations", "Newton iterations of that attempt")
+                     .max(kMaxIterations)
                      .min(1)
                      .fallback(stepping.snap_through_iterations),
                  object("newton", "Newton iterations of one load step",
                         {
                             integer("max_iterations", "iterations before the step fails and is halved")
+                                .max(kMaxIterations)
                                 .min(1)
                                 .fallback(newton.max_iterations),
                             number("residual_tolerance", "converged when |residual| <= this * force scale")
-                                .above(0)
+                                .min(kMinTolerance)
                                 .fallback(newton.residual_tolerance),
                             number("increment_tolerance",
                                    "... and the largest node displacement of the last iteration <= this * bounding-box "
                                    "diagonal")
-                                .above(0)
+                                .min(kMinTolerance)
                                 .fallback(newton.increment_tolerance),
                             string("line_search", "accept a step when the energy decreases, or when the residual does")
                                 .allowed({line_search_name(Rule::Energy), line_search_name(Rule::Residual)})
                                 .fallback(line_search_name(newton.line_search)),
                             integer("max_line_search_steps", "step halvings before the iteration fails")
+                                .max(kMaxHalvings)
                                 .min(0)
                                 .fallback(newton.max_line_search_steps),
                             number("quasi_viscosity",
                                    "K + D/dt with D_a = this * (volume around node a)^(1/3) (stress * length); 0 = off")
+                                .max(kMaxPhysical)
                                 .min(0)
                                 .fallback(newton.quasi_viscosity),
                             boolean("project_hessians",
@@ -564,13 +514,14 @@ SchemaNode solver_schema() {
                                           linear_solver_name(Kind::ConjugateGradient)})
                                 .fallback(linear_solver_name(linear.kind)),
                             number("tolerance", "relative residual at which iterative solvers stop")
-                                .above(0)
+                                .min(kMinTolerance)
                                 .below(1)
                                 .fallback(linear.tolerance),
                             integer("max_iterations", "iterative solvers' iteration limit")
+                                .max(kMaxLinearIterations)
                                 .min(1)
                                 .fallback(linear.max_iterations),
-                            integer("gmres_restart", "GMRES restart length").min(1).fallback(linear.gmres_restart),
+                            integer("gmres_restart", "GMRES restart length").min(1).max(kMaxRestart).fallback(linear.gmres_restart),
                         })
                      .fallback(json::object()),
              })
@@ -589,28 +540,35 @@ SchemaNode dynamics_schema() {
                     string("integrator", "implicit-euler, quasistatic or explicit")
                         .allowed({"implicit-euler", "quasistatic", "explicit"})
                         .fallback("implicit-euler"),
-                    number("end_time", "simulated time (time)").required().above(0),
+                    number("end_time", "simulated time (time)").required().above(0).max(kMaxTime),
                     number("output_interval", "VTU/PVD output every this much simulated time (time)")
                         .required()
-                        .above(0),
+                        .above(0)
+                        .max(kMaxTime),
                     number("time_step", "first step of the implicit integrators (time); default output_interval / 10")
-                        .above(0),
+                        .min(kMinTime)
+                        .max(kMaxTime),
                     number("max_time_step", "upper bound of the adaptive step (time); default output_interval")
-                        .above(0),
+                        .min(kMinTime)
+                        .max(kMaxTime),
                     number("min_time_step",
                            "a step halved below this fails the run (time); default 1e-6 of the first step")
-                        .above(0),
-                    number("growth", "step growth after an easy step").min(1).fallback(o.growth),
+                        .min(kMinTime)
+                        .max(kMaxTime),
+                    number("growth", "step growth after an easy step").min(1).max(kMaxGrowth).fallback(o.growth),
                     integer("easy_iterations", "Newton iterations at or below which a step counts as easy")
+                        .max(kMaxIterations)
                         .min(0)
                         .fallback(o.easy_iterations),
                     string("mass", "lumped (rho V / 4 per node) or consistent mass matrix (implicit only)")
                         .allowed({"lumped", "consistent"})
                         .fallback("lumped"),
                     number("mass_damping", "Rayleigh viscosity D = mass_damping M + stiffness_damping K0: 1/time")
+                        .max(kMaxPhysical)
                         .min(0)
                         .fallback(defaults.mass_damping),
                     number("stiffness_damping", "... and time (K0: elastic stiffness at rest)")
+                        .max(kMaxPhysical)
                         .min(0)
                         .fallback(defaults.stiffness_damping),
                     number("explicit_safety", "explicit step as a fraction of the critical step 2 / omega_max")
@@ -625,7 +583,7 @@ SchemaNode output_schema() {
   return object("output", "what is written",
                 {
                     boolean("vtu", "write a .vtu per output step and a .pvd series").fallback(defaults.vtu),
-                    integer("every", "write every n-th increment (the last one always)").min(1).fallback(defaults.every),
+                    integer("every", "write every n-th increment (the last one always)").min(1).max(kMaxIncrements).fallback(defaults.every),
                 })
       .fallback(json::object());
 }
@@ -636,7 +594,7 @@ Schema build_scene_schema() {
   schema.root = object("", "A scene: materials, bodies, boundary conditions, loads, solver and output settings",
                        {
                            string("name", "scene name, for logs and outputs").fallback(""),
-                           string("description", "free text").fallback(""),
+                           string("description", "free text").free_text().fallback(""),
                            string("units",
                                   "the consistent unit system, e.g. \"mm, N, MPa, s\" (documentation only: sinew "
                                   "converts nothing)")
@@ -668,177 +626,5 @@ const Schema& scene_schema() {
 }
 
 json scene_json_schema() { return to_json_schema(scene_schema()); }
-
-const std::string& scene_example_json() {
-  static const std::string example = R"json({
-  "name": "uniaxial-mooney-rivlin",
-  "description": "A block pulled along x next to a gel ball; shows every kind of entry.",
-  "units": "mm, N, MPa, s",
-  "materials": {
-    "rubber": {"law": "mooney-rivlin", "C1": 0.5, "C2": 0.1, "a": 2.0},
-    "tendon": {"law": "veronda-westmann", "alpha": 1.0, "beta": 1.0, "a": 10,
-               "fiber": {"alpha": 1.0, "beta": 2.0, "direction": [0, 0, 1]}},
-    "gel": {"law": "neo-hookean", "mu": 1.0, "lambda": 10.0}
-  },
-  "bodies": [
-    {"name": "block",
-     "mesh": {"file": "block.msh"},
-     "transform": {"translate": [0, 0, 0], "rotate": {"axis": [0, 0, 1], "angle_deg": 0}},
-     "regions": {"*": {"material": "rubber", "density": 1e-6},
-                 "bone": {"rigid": "fixed"},
-                 "patella": {"rigid": "free", "density": 2e-6},
-                 "tibia": {"rigid": {"prescribed": {"rotation": {"axis": [1, 0, 0], "point": [0, 0, 0], "angle_deg": 90}}}},
-                 "muscle": {"material": "tendon", "fiber_direction": [0, 0, 1]}}},
-    {"name": "ball",
-     "mesh": {"generate": {"element_size": 0.25,
-              "parts": [{"region": "ball", "shape": {"sphere": {"center": [0, 0, 2], "radius": 0.5}}},
-                        {"region": "core", "shape": {"difference": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}},
-                                                                    {"cylinder": {"base": [0.5, 0.5, 0], "axis": [0, 0, 1], "radius": 0.2}}]}}]}},
-     "transform": {"translate": [0, 0, 1]},
-     "regions": {"*": {"material": "gel"}}}
-  ],
-  "boundary_conditions": [
-    {"name": "clamp", "type": "fixed", "nodes": {"body": "block", "plane": {"point": [0, 0, 0], "normal": [1, 0, 0], "tolerance": 1e-6}}},
-    {"name": "pull", "type": "prescribed", "nodes": {"body": "block", "box": {"min": [1, 0, 0], "max": [1, 1, 1], "padding": 1e-6}},
-     "motion": {"translation": [0.5, 0, 0], "rotation": {"axis": [0, 0, 1], "point": [0, 0, 0], "angle_deg": 0}, "amplitude": [[0, 0], [1, 1]]}},
-    {"name": "roller", "type": "planar", "nodes": {"body": "block", "set": "bottom"}, "normal": [0, 0, 1], "displacement": 0.0}
-  ],
-  "loads": {"gravity": [0, 0, -9.81], "forces": [{"name": "push", "nodes": {"body": "ball", "region": "ball"}, "total_force": [0, 0, -1]}]},
-  "solver": {"increments": 10, "predictor": "two-point", "min_step": 1e-4, "growth": 2.0, "easy_iterations": 4,
-             "newton": {"max_iterations": 25, "residual_tolerance": 1e-6, "increment_tolerance": 1e-6,
-                        "line_search": "energy", "max_line_search_steps": 30, "quasi_viscosity": 0, "project_hessians": false},
-             "linear": {"solver": "cholmod", "tolerance": 0.1, "max_iterations": 200, "gmres_restart": 50}},
-  "output": {"vtu": true, "every": 1}
-}
-)json";
-  return example;
-}
-
-std::string scene_reference_markdown() {
-  std::ostringstream out;
-  out << R"md(# Scene file reference
-
-<!-- Generated by sinew::scene::scene_reference_markdown() (`sinew schema --markdown`); do not edit. -->
-
-A scene is one JSON file that describes everything sinew solves: materials, bodies (meshes and
-what their regions are made of), boundary conditions, loads, solver settings and outputs. It is
-validated strictly when loaded: every key is typed, ranged and documented below; unknown keys,
-wrong types, out-of-range values and missing required keys are all reported at once, each on its
-own line starting with the JSON path of the key, e.g.
-
-```
-bodies[0].regions.muscle.density: must be >= 0, got -1
-solver.newton.max_iteration: unknown key; did you mean "max_iterations"?
-```
-
-## Conventions
-
-- **Units**: any consistent set, stated in `units` (e.g. `"mm, N, MPa, s"`); sinew converts
-  nothing. Stresses and material constants are in the stress unit, densities in mass / length^3.
-- **Angles** are given in degrees (`angle_deg`) and stored in radians.
-- **vec3** is an array of three finite numbers `[x, y, z]`. JSON cannot hold NaN or infinity;
-  strings such as `"nan"` are rejected as wrong types.
-- **Integers** may be written `4` or `4.0`, not `4.5`.
-- **Paths** of mesh files are relative to the directory of the scene file.
-- **Defaults** below are those of the solver's option structs; an omitted key takes its default.
-- **Load parameter** lambda runs from 0 to 1 over a static solve. Prescribed motions, planar
-  displacements and forces reach their given (final) values at lambda = 1, scaled by an
-  [amplitude](#def-amplitude).
-
-## Bodies, regions and names
-
-Each body has a mesh, read from a Gmsh file or generated from primitive solids, placed by its
-`transform` (rotate about the origin, then translate). All bodies are numbered together; in
-outputs a body's regions and sets are called `"<body>/<region>"` and `"<body>/<set>"`.
-
-Every mesh region needs an entry in `regions`: its own, or the `"*"` entry that covers every
-region without one. An entry naming a region the mesh does not have is an error. A region is
-either deformable (`"material"`) or rigid (`"rigid"`):
-
-- `"rigid": "fixed"` – it does not move;
-- `"rigid": "free"` – it moves as one rigid body under contact and loads;
-- `"rigid": {"prescribed": motion}` – it follows a [motion](#def-motion).
-
-Nodes a rigid region shares with deformable tets bond the two. A node of a rigid region cannot
-carry a boundary condition: its motion is the rigid body's, so prescribe the rigid region.
-
-Gmsh physical groups: dimension-3 groups are regions (tets outside every group form the region
-`"default"`); dimension-2 groups are face sets and node sets; dimension-0 and 1 groups are node
-sets. Generated meshes have one region per part and a face set `"<region>.surface"` per part.
-
-## Node selectors
-
-A [node selector](#def-node-selector) chooses nodes of one body: `"body"` (optional when the
-scene has exactly one body) and exactly one of
-
-| Key | Selects |
-| --- | --- |
-| `"set": "name"` | the node set of that name, or else the nodes of the face set of that name |
-| `"region": "name"` | the nodes of the tets of that mesh region |
-| `"box": {"min": [..], "max": [..], "padding": p}` | nodes with rest position in [min - p, max + p] |
-| `"plane": {"point": [..], "normal": [..], "tolerance": t}` | nodes with rest position X such that \|n . (X - point)\| <= t |
-| `"all": true` | every node of the body |
-
-Positions are rest positions after the body's transform. A selector that matches no node is an
-error. A node prescribed by two `fixed`/`prescribed` conditions is an error; `planar` conditions
-on one node intersect (two planes leave a line).
-
-## Shapes
-
-A [shape](#def-shape) is an object with exactly one key: `box` (`min`, `max`), `sphere`
-(`center`, `radius`), `cylinder` (`base` = center of the base disk, `axis` = base-to-top vector
-whose length is the height, `radius`), `torus` (`center`, `axis` = normal of its plane, `radius`
-= major radius, `minor_radius`, `angle_deg`, `start_direction`), `union` (array of shapes, all
-fused), `difference` (array of shapes, the first minus all the others) or `intersection` (array
-of shapes, the region common to all). Shapes nest:
-
-```json
-{"difference": [{"box": {"min": [0, 0, 0], "max": [1, 1, 1]}},
-                {"cylinder": {"base": [0.5, 0.5, 0], "axis": [0, 0, 1], "radius": 0.2}}]}
-```
-
-A torus with `angle_deg` below 360 is a bent rod with flat ends: with unit axis a and unit start
-direction s (`start_direction` made perpendicular to a; by default +x projected onto the torus
-plane, or +y when a is along x), its centre line is center + radius (cos φ s + sin φ (a × s)) for
-φ from 0 to `angle_deg`.
-
-Any shape may also hold `"transform": {"rotate": {"axis": [..], "angle_deg": θ, "center": [..]},
-"translate": [..]}` (both optional). It moves the shape once built (a boolean after its children
-are combined, each child moved first by its own transform): a point x goes to
-
-    x' = R(θ, axis) (x - center) + center + translate.
-
-Parts for a slab slanted at 45 degrees about y and raised by 1.5 (its lowest edge just above
-z = 0), and a rod of radius 0.1 bent through a quarter turn (from +x towards +y) that rests on
-the plane z = 0:
-
-```json
-[{"region": "slope", "shape": {"box": {"min": [-2, -1, -0.1], "max": [2, 1, 0.1]},
-                               "transform": {"rotate": {"axis": [0, 1, 0], "angle_deg": 45}, "translate": [0, 0, 1.5]}}},
- {"region": "bar", "shape": {"torus": {"center": [0, 0, 0.1], "axis": [0, 0, 1], "radius": 1,
-                                       "minor_radius": 0.1, "angle_deg": 90}}}]
-```
-
-## Motions and amplitudes
-
-A [motion](#def-motion) is `{"translation": [..], "rotation": {"axis": [..], "point": [..],
-"angle_deg": θ}, "amplitude": [[lambda, factor], ...]}`; every key is optional. At load
-parameter lambda a node at rest position X is at
-
-    x = R(a θ, axis) (X - point) + point + a translation,   a = amplitude(lambda).
-
-An [amplitude](#def-amplitude) is a list of `[lambda, factor]` points with lambda strictly
-increasing, linear in between and constant outside; omitted, it is the ramp a(lambda) = lambda.
-
-## Keys
-
-)md";
-  out << schema_markdown_tables(scene_schema());
-  out << "## Example\n\nThe mesh file `block.msh` of this example is `tests/scene/data/block.msh` in the source tree "
-         "(a unit cube of 4 x 4 x 4 cells with regions flesh, bone, patella, tibia, muscle and face sets left, "
-         "bottom); the tests parse and build this scene.\n\n```json\n"
-      << scene_example_json() << "```\n";
-  return out.str();
-}
 
 }  // namespace sinew::scene

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <set>
 
 namespace sinew::scene {
@@ -17,9 +18,8 @@ using nlohmann::json;
 std::string format_number(double value) {
   if (std::isnan(value)) return "nan";
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  if (value == std::floor(value) && std::abs(value) < 1e15) {
-    return std::to_string(static_cast<long long>(value));
-  }
+  // The shortest form that reads back exactly: 5, 0.1, 2147483648, 1e+06, 1e-06, 1e+300 (never
+  // the 301 digits of 1e300 written out).
   std::array<char, 64> buffer{};
   const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
   return std::string(buffer.data(), result.ptr);
@@ -257,6 +257,7 @@ class Validator {
                       (node.min_items == 1 ? "y" : "ies"));
     }
     for (auto it = value.begin(); it != value.end(); ++it) {
+      if (!check_no_control_characters(it.key(), json_path_key(path, it.key()), "names")) continue;
       check(node.items.at(0), it.value(), json_path_key(path, it.key()));
     }
   }
@@ -280,32 +281,49 @@ class Validator {
     if (!value.is_number()) return type_error(node, value, path);
     const double number = value.get<double>();
     if (!std::isfinite(number)) return error(path, "must be a finite number, got " + show(value));
+    std::optional<SchemaBound> minimum = node.minimum, maximum = node.maximum;
     if (node.type == SchemaType::Integer) {
-      if (!value.is_number_integer()) {
-        if (number != std::floor(number) || std::abs(number) > 9e15) return type_error(node, value, path);
-        value = static_cast<std::int64_t>(number);
-      }
+      if (number != std::floor(number)) return type_error(node, value, path);
+      // Integers are read into int: without a bound of its own, 2147483648 would wrap.
+      if (!minimum) minimum = SchemaBound{static_cast<double>(std::numeric_limits<int>::min()), false};
+      if (!maximum) maximum = SchemaBound{static_cast<double>(std::numeric_limits<int>::max()), false};
+      if (!value.is_number_integer() && std::abs(number) <= 9e15) value = static_cast<std::int64_t>(number);
     }
-    if (node.minimum) {
-      const SchemaBound& bound = *node.minimum;
-      if (bound.exclusive ? !(number > bound.value) : !(number >= bound.value)) {
-        error(path, std::string("must be ") + (bound.exclusive ? "> " : ">= ") + format_number(bound.value) +
-                        ", got " + show(value));
-      }
+    check_bounds(minimum, maximum, number, path, show(value));
+  }
+
+  void check_bounds(const std::optional<SchemaBound>& minimum, const std::optional<SchemaBound>& maximum,
+                    double number, const std::string& path, const std::string& shown) {
+    if (minimum && (minimum->exclusive ? !(number > minimum->value) : !(number >= minimum->value))) {
+      error(path, std::string("must be ") + (minimum->exclusive ? "> " : ">= ") + format_number(minimum->value) +
+                      ", got " + shown);
     }
-    if (node.maximum) {
-      const SchemaBound& bound = *node.maximum;
-      if (bound.exclusive ? !(number < bound.value) : !(number <= bound.value)) {
-        error(path, std::string("must be ") + (bound.exclusive ? "< " : "<= ") + format_number(bound.value) +
-                        ", got " + show(value));
-      }
+    if (maximum && (maximum->exclusive ? !(number < maximum->value) : !(number <= maximum->value))) {
+      error(path, std::string("must be ") + (maximum->exclusive ? "< " : "<= ") + format_number(maximum->value) +
+                      ", got " + shown);
     }
+  }
+
+  /// Names, paths and choices may not hold control characters (a NUL would cut messages).
+  bool check_no_control_characters(const std::string& text, const std::string& path, const char* what) {
+    const bool has_control = std::any_of(text.begin(), text.end(), [](char c) {
+      return static_cast<unsigned char>(c) < 0x20;
+    });
+    if (has_control) {
+      error(path, std::string(what) + " may not contain control characters (codes below 0x20), got " +
+                      json(text).dump());
+    }
+    return !has_control;
   }
 
   void check_scalar(const SchemaNode& node, json& value, const std::string& path) {
     const bool kind_ok = node.type == SchemaType::String ? value.is_string() : value.is_boolean();
     if (!kind_ok) return type_error(node, value, path);
     if (node.non_empty && value.get<std::string>().empty()) return error(path, "must not be empty");
+    if (node.type == SchemaType::String && !node.free_text &&
+        !check_no_control_characters(value.get<std::string>(), path, "names")) {
+      return;
+    }
     if (node.allowed.empty()) return;
     if (std::find(node.allowed.begin(), node.allowed.end(), value) != node.allowed.end()) return;
     std::vector<std::string> shown;
@@ -331,6 +349,9 @@ class Validator {
     if (!shape_ok) return type_error(node, value, path);
     for (const json& x : value) {
       if (!std::isfinite(x.get<double>())) return error(path, "must hold finite numbers, got " + show(value));
+    }
+    for (std::size_t i = 0; i < 3; ++i) {
+      check_bounds(node.minimum, node.maximum, value[i].get<double>(), json_path_index(path, i), show(value[i]));
     }
     if (node.nonzero && std::all_of(value.begin(), value.end(), [](const json& x) { return x.get<double>() == 0; })) {
       error(path, "must not be the zero vector");

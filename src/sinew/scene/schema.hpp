@@ -24,7 +24,7 @@ enum class SchemaType {
   Map,      ///< free keys (names), every value follows `items[0]`
   Array,    ///< every element follows `items[0]`; size in [min_items, max_items]
   Number,   ///< finite number
-  Integer,  ///< number with no fractional part
+  Integer,  ///< number with no fractional part, within the range of int unless bounded otherwise
   String,
   Boolean,
   Vec3,     ///< array of exactly 3 finite numbers
@@ -49,12 +49,16 @@ struct SchemaNode {
   bool required = false;
   std::optional<nlohmann::json> default_value;  ///< filled in when the key is omitted
 
-  // Number, Integer
+  // Number, Integer; Vec3: bounds on each component. An Integer without a bound of its own is
+  // bounded by the range of int, the type integers are read into.
   std::optional<SchemaBound> minimum;
   std::optional<SchemaBound> maximum;
   // String, Boolean: allowed values (empty = any)
   std::vector<nlohmann::json> allowed;
   bool non_empty = false;  ///< String: must not be ""
+  /// String: may hold control characters (code < 0x20: NUL, newline, ...), as free text may.
+  /// Other strings (names, paths, choices) and every Map key may not: a NUL would cut messages.
+  bool free_text = false;
   bool nonzero = false;    ///< Vec3: must not be [0, 0, 0]
 
   // Object, OneOf: the keys, in documentation order
@@ -105,8 +109,8 @@ nlohmann::json to_json_schema(const Schema& schema);
 /// description. Each definition gets a section, linked from the keys that refer to it.
 std::string schema_markdown_tables(const Schema& schema);
 
-/// Renders a number the way messages and docs show it: integers without a decimal point,
-/// others in the shortest form that reads back exactly (0.1, 1e-06).
+/// Renders a number the way messages and docs show it: the shortest form that reads back exactly
+/// (5, 0.1, 2147483648, 1e+06, 1e-06, 1e+300), integers without a decimal point.
 std::string format_number(double value);
 
 /// Appends a key or index to a JSON path: "a" + "b" -> "a.b"; keys that are not plain

@@ -96,6 +96,7 @@ json node_json(const SchemaNode& node) {
     case SchemaType::Vec3:
       out["type"] = "array";
       out["items"] = json{{"type", "number"}};
+      out["items"].update(bound_json(node));
       out["minItems"] = 3;
       out["maxItems"] = 3;
       if (node.nonzero) out["not"] = json{{"const", json::array({0, 0, 0})}};
@@ -225,8 +226,9 @@ class MarkdownWriter {
 
   static std::string range_text(const SchemaNode& node) {
     std::vector<std::string> parts;
-    if (node.minimum) parts.push_back(bound_text(node.minimum->exclusive ? "> " : ">= ", node.minimum->value));
-    if (node.maximum) parts.push_back(bound_text(node.maximum->exclusive ? "< " : "<= ", node.maximum->value));
+    const std::string each = node.type == SchemaType::Vec3 ? "each " : "";  // Vec3: bounds on every component
+    if (node.minimum) parts.push_back(each + bound_text(node.minimum->exclusive ? "> " : ">= ", node.minimum->value));
+    if (node.maximum) parts.push_back(each + bound_text(node.maximum->exclusive ? "< " : "<= ", node.maximum->value));
     if (!node.allowed.empty()) {
       std::string list;
       for (std::size_t i = 0; i < node.allowed.size(); ++i) {

@@ -71,9 +71,10 @@ struct NewtonResult {
 
 struct NewtonContext {
   double characteristic_length = 1;  ///< for the increment criterion (length)
-  /// Force of order (stiffest initial shear modulus) x (characteristic length)^2. Residuals below
-  /// 1e-13 of it are round-off and count as converged whatever the relative criterion says
-  /// (a state with no load at all has nothing to be relative to). 0 disables the floor.
+  /// Force of order (stiffest initial modulus, shear or bulk) x (characteristic length)^2.
+  /// Residuals below 1e-13 of it are round-off and count as converged whatever the relative
+  /// criterion says (a state with no load at all has nothing to be relative to). 0 disables
+  /// the floor.
   double reference_force = 0;
   VectorX node_viscosity;            ///< quasi-viscosity per node (force / length), or empty
   /// Terms of the objective that belong to time integration (inertia, viscosity): left out of
