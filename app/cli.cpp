@@ -25,12 +25,19 @@ namespace sinew::app {
 
 namespace {
 
-/// The scene with every generated mesh's element size set to `size` (0: unchanged). Bodies
-/// read from files keep their meshes.
-scene::SceneConfig with_element_size(scene::SceneConfig config, double size) {
-  if (size > 0)
+/// What the command line overrides in a scene: every generated mesh's element size (0:
+/// unchanged; bodies read from files keep their meshes) and the largest estimated tetrahedron
+/// count a body may have before meshing (0: the default).
+struct SceneOverrides {
+  double element_size = 0;
+  double max_tets = 0;
+};
+
+scene::SceneConfig with_overrides(scene::SceneConfig config, const SceneOverrides& overrides) {
+  if (overrides.element_size > 0)
     for (auto& body : config.bodies)
-      if (body.mesh.file.empty()) body.mesh.generate.element_size = size;
+      if (body.mesh.file.empty()) body.mesh.generate.element_size = overrides.element_size;
+  if (overrides.max_tets > 0) config.limits.max_tets = overrides.max_tets;
   return config;
 }
 
@@ -113,15 +120,20 @@ int run_commands(int argc, char** argv) {
   run->add_flag("--overwrite", run_options.overwrite,
                 "replace the results of an earlier sinew run in the output directory (a directory sinew did not "
                 "write is never emptied)");
-  double element_size = 0;
+  SceneOverrides overrides;
   const std::string element_size_help =
       "override the element_size of every generated mesh (length): the same scene coarser or finer";
-  run->add_option("--element-size", element_size, element_size_help)->check(kFinitePositive);
+  const std::string max_tets_help = fmt::format(
+      "refuse a generated body whose estimated tetrahedron count exceeds this before meshing (default {:g})",
+      scene::ResourceLimits{}.max_tets);
+  run->add_option("--element-size", overrides.element_size, element_size_help)->check(kFinitePositive);
+  run->add_option("--max-tets", overrides.max_tets, max_tets_help)->check(kFinitePositive);
 
   auto* validate = cli.add_subcommand("validate", "check a scene (schema, meshes, constraints) without solving");
   std::string validate_path;
   validate->add_option("scene", validate_path, "scene file (JSON)")->required();
-  validate->add_option("--element-size", element_size, element_size_help)->check(kFinitePositive);
+  validate->add_option("--element-size", overrides.element_size, element_size_help)->check(kFinitePositive);
+  validate->add_option("--max-tets", overrides.max_tets, max_tets_help)->check(kFinitePositive);
 
   auto* schema = cli.add_subcommand("schema", "print the scene format");
   bool markdown = false, json = false;
@@ -194,7 +206,7 @@ int run_commands(int argc, char** argv) {
       return code(ExitCode::Success);
     }
     if (*validate) {
-      const auto config = with_element_size(scene::load_scene_file(validate_path), element_size);
+      const auto config = with_overrides(scene::load_scene_file(validate_path), overrides);
       const fem::Problem problem = scene::build_problem(config);
       // The same model a run builds: contact (depths, penalties) and dynamics (masses, time
       // steps) are checked too.
@@ -238,7 +250,7 @@ int run_commands(int argc, char** argv) {
     // The output directory is checked before any work (nothing is written until the scene has
     // passed every check).
     io::check_output_directory(run_options.output_directory, {.overwrite = run_options.overwrite});
-    const auto config = with_element_size(scene::load_scene_file(scene_path), element_size);
+    const auto config = with_overrides(scene::load_scene_file(scene_path), overrides);
     const RunReport report = run_scene(config, run_options);
     if (!report.success) {
       logger().error("{}", report.message);

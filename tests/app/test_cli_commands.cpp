@@ -244,5 +244,23 @@ TEST(Cli, StudyConvergenceRejectsBadOptionsBeforeWriting) {
   EXPECT_FALSE(fs::exists(study));
 }
 
+// A mesh far beyond the machine is refused from its estimate before meshing; --max-tets moves
+// the limit both ways.
+TEST(Cli, MaxTetsBoundsTheEstimatedMeshBeforeMeshing) {
+  ScratchDirectory directory;
+  const fs::path scene = directory / "scene.json";
+  write_text(scene, small_block_scene().dump(2));  // 10 mm cube, element_size 5
+  const CommandResult tiny = run_sinew({"validate", scene.string(), "--element-size", "0.01"}, directory);
+  EXPECT_EQ(tiny.exit_code, 1) << tiny.err;
+  EXPECT_THAT(tiny.err, HasSubstr("--max-tets"));
+  const CommandResult tight = run_sinew({"validate", scene.string(), "--max-tets", "2"}, directory);
+  EXPECT_EQ(tight.exit_code, 1) << tight.err;
+  EXPECT_THAT(tight.err, HasSubstr("--max-tets"));
+  const CommandResult allowed = run_sinew({"validate", scene.string(), "--max-tets", "1e4"}, directory);
+  EXPECT_EQ(allowed.exit_code, 0) << allowed.err;
+  const CommandResult nan = run_sinew({"validate", scene.string(), "--max-tets", "nan"}, directory);
+  EXPECT_EQ(nan.exit_code, 1) << nan.err;
+}
+
 }  // namespace
 }  // namespace sinew::app_test
