@@ -140,6 +140,29 @@ void read_node_fields(TetMesh& mesh, const std::vector<std::size_t>& node_tags) 
   }
 }
 
+/// Throws InputError naming the Gmsh tags of the first nodes (used by tets) with an infinite
+/// or NaN coordinate; `node_tags[kept_positions[v]]` is the tag of mesh node v.
+void reject_non_finite_nodes(const Positions& rest, const std::vector<std::size_t>& node_tags,
+                             const std::vector<Index>& kept_positions) {
+  std::size_t count = 0;
+  std::string first;
+  for (Index v = 0; v < rest.rows(); ++v) {
+    if (rest.row(v).allFinite()) continue;
+    if (count++ < 3) {
+      first += (first.empty() ? "" : "; ") + std::string("node tag ") +
+               std::to_string(node_tags[static_cast<std::size_t>(kept_positions[static_cast<std::size_t>(v)])]) +
+               " at " + show_point(rest, v);
+    }
+  }
+  if (count == 0) return;
+  throw InputError(std::to_string(count) +
+                   (count == 1 ? " node has a non-finite coordinate (infinite, NaN or beyond "
+                                 "1.8e308): "
+                               : " nodes have non-finite coordinates (infinite, NaN or beyond "
+                                 "1.8e308), first: ") +
+                   first);
+}
+
 }  // namespace
 
 void reject_folded_tets(const Positions& rest, const Tets& tets) {
@@ -288,6 +311,7 @@ TetMesh tet_mesh_from_gmsh_model() {
     for (int k = 0; k < 4; ++k) mesh.tets(t, k) = new_index[tet_nodes[4 * t + k]];
   }
   mesh.region = Eigen::Map<const IndexVector>(tet_regions.data(), num_tets);
+  reject_non_finite_nodes(mesh.rest, node_tags, kept_positions);
   reject_folded_tets(mesh.rest, mesh.tets);
   orient_positively(mesh.rest, mesh.tets);
 

@@ -2,32 +2,17 @@
 
 #include <gmsh.h>
 
-#include <filesystem>
-#include <fstream>
-#include <system_error>
+#include <new>
+#include <stdexcept>
 
 #include "sinew/core/error.hpp"
 #include "sinew/mesh/gmsh_model.hpp"
 #include "sinew/mesh/gmsh_session.hpp"
+#include "sinew/mesh/msh_format_check.hpp"
 
 namespace sinew::mesh {
 
 namespace {
-
-/// Gmsh silently ignores files it cannot open, so check first.
-void check_readable(const std::string& path) {
-  std::error_code error;
-  const auto status = std::filesystem::status(path, error);
-  if (error || !std::filesystem::exists(status)) {
-    throw InputError("mesh file \"" + path + "\" does not exist");
-  }
-  if (!std::filesystem::is_regular_file(status)) {
-    throw InputError("mesh file \"" + path + "\" is not a regular file");
-  }
-  if (!std::ifstream(path, std::ios::binary).good()) {
-    throw InputError("mesh file \"" + path + "\" cannot be opened for reading");
-  }
-}
 
 std::string join(const std::vector<std::string>& names) {
   std::string joined;
@@ -38,12 +23,23 @@ std::string join(const std::vector<std::string>& names) {
 }  // namespace
 
 TetMesh read_msh(const std::string& path) {
-  check_readable(path);
+  // Only a file that passed check_msh_file reaches Gmsh: anything else could be run as a script.
+  check_msh_file(path);
   const std::string context = "mesh file \"" + path + "\"";
   TetMesh mesh;
   {
     GmshSession gmsh_session;
-    gmsh_session.run(context, [&] { gmsh::open(path); });
+    gmsh_session.run(context, [&] {
+      try {
+        gmsh::open(path);
+      } catch (const std::bad_alloc&) {
+        throw InputError(context + " is malformed or truncated (a count in it is larger than the "
+                                   "file; Gmsh ran out of memory reading it): re-export it from Gmsh");
+      } catch (const std::length_error&) {
+        throw InputError(context + " is malformed or truncated (a count in it is larger than the "
+                                   "file): re-export it from Gmsh");
+      }
+    });
     mesh = gmsh_session.run(context, [&] {
       const auto other_volume_elements = gmsh_element_type_names(3, {kGmshLinearTetrahedron});
       if (!other_volume_elements.empty()) {

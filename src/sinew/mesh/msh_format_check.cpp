@@ -1,0 +1,359 @@
+#include "sinew/mesh/msh_format_check.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <system_error>
+#include <vector>
+
+#include "sinew/core/error.hpp"
+
+namespace sinew::mesh {
+
+namespace {
+
+/// The section names of the MSH format (Gmsh reference manual, "MSH file format"); a line
+/// holding one of them opens that section.
+constexpr std::array<const char*, 13> kSectionNames = {
+    "MeshFormat",  "PhysicalNames",   "Entities", "PartitionedEntities", "Nodes",
+    "Elements",    "Periodic",        "GhostElements", "Parametrizations", "NodeData",
+    "ElementData", "ElementNodeData", "InterpolationScheme"};
+
+bool is_section_opener(const std::string& line) {
+  if (line.size() < 2 || line[0] != '$') return false;
+  for (const char* name : kSectionNames) {
+    if (line.compare(1, std::string::npos, name) == 0) return true;
+  }
+  return false;
+}
+
+/// Nodes per element of the MSH element types up to 19 (Gmsh reference manual, "MSH file
+/// format", element types); 0 for types not listed.
+int nodes_of_element_type(std::uint64_t type) {
+  constexpr std::array<int, 20> kNodes = {0, 2, 3,  4,  4,  8,  6,  5,  3,  6,
+                                          9, 10, 27, 18, 14, 1, 8, 20, 15, 13};
+  return type < kNodes.size() ? kNodes[type] : 0;
+}
+
+/// Reads an MSH file as lines, whitespace-separated tokens or raw binary values, reporting
+/// every problem as an InputError that names the file.
+class MshCursor {
+ public:
+  MshCursor(const std::string& path, std::uintmax_t size)
+      : in_(path, std::ios::binary), size_(size), context_("mesh file \"" + path + "\"") {
+    if (!in_) fail(" cannot be opened for reading");
+  }
+
+  [[noreturn]] void fail(const std::string& problem) const { throw InputError(context_ + problem); }
+
+  /// The next line without its end-of-line characters; false at the end of the file.
+  bool next_line(std::string& line) {
+    if (!std::getline(in_, line)) return false;
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) {
+      line.pop_back();
+    }
+    return true;
+  }
+
+  std::uintmax_t remaining() {
+    const auto position = in_.tellg();
+    if (position < 0) return 0;
+    const auto used = static_cast<std::uintmax_t>(position);
+    return used < size_ ? size_ - used : 0;
+  }
+
+  /// An ASCII count (a non-negative integer) of `section`.
+  std::uint64_t ascii_count(const std::string& section) {
+    std::string token;
+    if (!(in_ >> token)) truncated(section);
+    std::uint64_t value = 0;
+    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (error != std::errc() || end != token.data() + token.size()) {
+      fail(" is malformed: its $" + section + " section holds \"" + token.substr(0, 40) +
+           "\" where a count (a non-negative integer) belongs");
+    }
+    return value;
+  }
+
+  void skip_tokens(std::uint64_t count, const std::string& section) {
+    std::string token;
+    for (std::uint64_t i = 0; i < count; ++i) {
+      if (!(in_ >> token)) truncated(section);
+    }
+  }
+
+  template <class T>
+  T binary(const std::string& section) {
+    T value{};
+    if (!in_.read(reinterpret_cast<char*>(&value), sizeof(T))) truncated(section);
+    return value;
+  }
+
+  void skip_bytes(std::uint64_t count, const std::string& section) {
+    if (count > remaining()) truncated(section);
+    in_.seekg(static_cast<std::streamoff>(count), std::ios::cur);
+  }
+
+  /// Throws unless `count` items of at least `bytes_each` bytes fit in the rest of the file.
+  void check_fits(std::uint64_t count, std::uint64_t bytes_each, const std::string& what,
+                  const std::string& section) {
+    const std::uintmax_t left = remaining();
+    if (count > left / bytes_each) {
+      fail(" is malformed or truncated: its $" + section + " section announces " +
+           std::to_string(count) + " " + what + ", more than the " + std::to_string(left) +
+           " bytes that follow can hold (a count in its header is larger than the file)");
+    }
+  }
+
+  [[noreturn]] void truncated(const std::string& section) const {
+    fail(" is truncated or malformed: it ends inside its $" + section +
+         " section, before the data its header announces (re-export it from Gmsh)");
+  }
+
+ private:
+  std::ifstream in_;
+  std::uintmax_t size_;
+  std::string context_;
+};
+
+MshFileFormat read_format(MshCursor& cursor) {
+  const std::string not_msh =
+      " is not a Gmsh MSH file (it must begin with a $MeshFormat line; sinew never runs Gmsh "
+      "scripts such as .geo files: mesh the geometry in Gmsh and save it as .msh)";
+  std::string line;
+  if (!cursor.next_line(line) || line != "$MeshFormat") cursor.fail(not_msh);
+  if (!cursor.next_line(line)) cursor.fail(not_msh);
+  std::istringstream fields(line);
+  std::string version_text;
+  int file_type = -1;
+  int data_size = -1;
+  std::string extra;
+  fields >> version_text >> file_type >> data_size;
+  const bool parsed = !fields.fail() && !(fields >> extra);
+  MshFileFormat format;
+  format.version = version_text == "2.2" ? 2.2 : version_text == "4" || version_text == "4.0" ? 4.0
+                                             : version_text == "4.1"                         ? 4.1
+                                                                                             : 0;
+  if (!parsed || format.version == 0 || (file_type != 0 && file_type != 1) || data_size != 8) {
+    cursor.fail(" has the $MeshFormat header \"" + line.substr(0, 60) +
+                "\"; sinew reads MSH versions 2.2, 4.0 and 4.1, ASCII (0) or binary (1), with "
+                "data size 8, e.g. \"4.1 0 8\" (re-export it from Gmsh)");
+  }
+  format.binary = file_type == 1;
+  if (format.binary) {
+    const int one = cursor.binary<int>("MeshFormat");
+    if (one != 1) {
+      cursor.fail(" is a binary MSH file of another byte order (or damaged); re-export it from "
+                  "Gmsh as ASCII (Mesh.Binary = 0)");
+    }
+  }
+  return format;
+}
+
+/// Walks a version 4.1 $Nodes section up to its last coordinate, checking every count;
+/// appends the node tags to `tags`.
+void walk_nodes_v41(MshCursor& cursor, bool binary, std::vector<std::uint64_t>& tags) {
+  const std::string section = "Nodes";
+  const auto count = [&] {
+    return binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
+  };
+  const auto small = [&] {
+    return binary ? static_cast<std::uint64_t>(cursor.binary<std::int32_t>(section))
+                  : cursor.ascii_count(section);
+  };
+  const std::uint64_t num_blocks = count();
+  const std::uint64_t num_nodes = count();
+  count();  // min tag
+  count();  // max tag
+  cursor.check_fits(num_blocks, binary ? 20 : 8, "entity blocks", section);
+  cursor.check_fits(num_nodes, binary ? 32 : 8, "nodes", section);
+  for (std::uint64_t b = 0; b < num_blocks; ++b) {
+    const std::uint64_t dim = small();
+    small();  // entity tag
+    const std::uint64_t parametric = small();
+    const std::uint64_t block_nodes = count();
+    if (dim > 3 || parametric > 1) {
+      cursor.fail(" is malformed: a $Nodes entity block has dimension " + std::to_string(dim) +
+                  " and parametric flag " + std::to_string(parametric) +
+                  " (expected 0-3 and 0 or 1)");
+    }
+    const std::uint64_t values_per_node = 3 + (parametric ? dim : 0);
+    cursor.check_fits(block_nodes, binary ? 8 * (1 + values_per_node) : 2 * (1 + values_per_node),
+                      "nodes in an entity block", section);
+    for (std::uint64_t i = 0; i < block_nodes; ++i) tags.push_back(count());
+    if (binary) {
+      cursor.skip_bytes(block_nodes * 8 * values_per_node, section);
+    } else {
+      cursor.skip_tokens(block_nodes * values_per_node, section);
+    }
+  }
+}
+
+/// Walks a version 2.2 $Nodes section after its count, appending the node tags to `tags`.
+void walk_nodes_v22(MshCursor& cursor, bool binary, std::uint64_t num_nodes,
+                    std::vector<std::uint64_t>& tags) {
+  const std::string section = "Nodes";
+  for (std::uint64_t i = 0; i < num_nodes; ++i) {
+    if (binary) {
+      tags.push_back(static_cast<std::uint32_t>(cursor.binary<std::int32_t>(section)));
+      cursor.skip_bytes(24, section);
+    } else {
+      tags.push_back(cursor.ascii_count(section));
+      cursor.skip_tokens(3, section);
+    }
+  }
+}
+
+/// Throws InputError naming the first node tags that `tags` holds more than once: Gmsh would
+/// keep one of the nodes and silently drop the other.
+void reject_duplicate_tags(MshCursor& cursor, std::vector<std::uint64_t>& tags) {
+  std::sort(tags.begin(), tags.end());
+  std::vector<std::uint64_t> duplicates;
+  for (std::size_t i = 0; i + 1 < tags.size(); ++i) {
+    if (tags[i] == tags[i + 1] && (duplicates.empty() || duplicates.back() != tags[i])) {
+      duplicates.push_back(tags[i]);
+    }
+  }
+  if (duplicates.empty()) return;
+  std::string listed;
+  for (std::size_t i = 0; i < std::min<std::size_t>(duplicates.size(), 3); ++i) {
+    listed += (i ? ", " : "") + std::to_string(duplicates[i]);
+  }
+  cursor.fail(": duplicate node tag" + std::string(duplicates.size() == 1 ? " " : "s ") + listed +
+              (duplicates.size() > 3 ? ", ..." : "") + " (" + std::to_string(duplicates.size()) +
+              (duplicates.size() == 1 ? " tag is" : " tags are") +
+              " given to more than one node in $Nodes); every node needs its own tag");
+}
+
+/// Walks a version 4.1 $Elements section, checking every count; stops at an element type it
+/// does not know (Gmsh reports those).
+void walk_elements_v41(MshCursor& cursor, bool binary) {
+  const std::string section = "Elements";
+  const auto count = [&] {
+    return binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
+  };
+  const auto small = [&] {
+    return binary ? static_cast<std::uint64_t>(cursor.binary<std::int32_t>(section))
+                  : cursor.ascii_count(section);
+  };
+  const std::uint64_t num_blocks = count();
+  const std::uint64_t num_elements = count();
+  count();  // min tag
+  count();  // max tag
+  cursor.check_fits(num_blocks, binary ? 20 : 8, "entity blocks", section);
+  cursor.check_fits(num_elements, binary ? 16 : 4, "elements", section);
+  for (std::uint64_t b = 0; b < num_blocks; ++b) {
+    small();  // entity dimension
+    small();  // entity tag
+    const std::uint64_t type = small();
+    const std::uint64_t block_elements = count();
+    const int nodes = nodes_of_element_type(type);
+    const std::uint64_t values_per_element = 1 + static_cast<std::uint64_t>(nodes > 0 ? nodes : 1);
+    cursor.check_fits(block_elements, binary ? 8 * values_per_element : 2 * values_per_element,
+                      "elements in an entity block", section);
+    if (nodes == 0) return;
+    if (binary) {
+      cursor.skip_bytes(block_elements * 8 * values_per_element, section);
+    } else {
+      cursor.skip_tokens(block_elements * values_per_element, section);
+    }
+  }
+}
+
+/// Checks the counts at the start of a $Nodes or $Elements section (all of them for version
+/// 4.1); appends the node tags of versions 2.2 and 4.1 to `tags`.
+void check_section_counts(MshCursor& cursor, const std::string& section,
+                          const MshFileFormat& format, std::vector<std::uint64_t>& tags) {
+  const bool nodes = section == "Nodes";
+  if (format.version == 4.1) {
+    if (nodes) {
+      walk_nodes_v41(cursor, format.binary, tags);
+    } else {
+      walk_elements_v41(cursor, format.binary);
+    }
+    return;
+  }
+  if (format.version == 4.0) {
+    const auto count = [&] {
+      return format.binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
+    };
+    const std::uint64_t num_blocks = count();
+    const std::uint64_t num_items = count();
+    cursor.check_fits(num_blocks, 8, "entity blocks", section);
+    cursor.check_fits(num_items, 8, nodes ? "nodes" : "elements", section);
+    return;
+  }
+  // Version 2.2: one ASCII count, then a node (tag and 3 coordinates, 28 bytes in binary) or an
+  // element (at least 8 bytes) per item.
+  const std::uint64_t num_items = cursor.ascii_count(section);
+  cursor.check_fits(num_items, nodes && format.binary ? 28 : 8, nodes ? "nodes" : "elements",
+                    section);
+  if (nodes) walk_nodes_v22(cursor, format.binary, num_items, tags);
+}
+
+}  // namespace
+
+MshFileFormat check_msh_file(const std::string& path) {
+  const std::string context = "mesh file \"" + path + "\"";
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (error || !std::filesystem::exists(status)) throw InputError(context + " does not exist");
+  if (!std::filesystem::is_regular_file(status)) {
+    throw InputError(context + " is not a regular file (a directory, FIFO or device); give the "
+                               "path of a .msh file");
+  }
+  const std::string extension = std::filesystem::path(path).extension().string();
+  if (extension != ".msh") {
+    throw InputError(context + " has the extension \"" + extension +
+                     "\"; sinew reads only Gmsh MSH files named *.msh (it never runs Gmsh "
+                     "scripts such as .geo files: mesh the geometry in Gmsh and save it as .msh)");
+  }
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error) throw InputError(context + " cannot be read: " + error.message());
+  if (size > kMaxMshFileBytes) {
+    throw InputError(context + " is " + std::to_string(size) + " bytes long; sinew reads mesh files of at most " +
+                     std::to_string(kMaxMshFileBytes) + " bytes (2 GiB): save the mesh in binary (Mesh.Binary = 1) "
+                     "or coarsen it");
+  }
+
+  MshCursor cursor(path, size);
+  const MshFileFormat format = read_format(cursor);
+  std::map<std::string, int> sections_seen;
+  std::vector<std::uint64_t> tags;  // of every node in $Nodes
+  std::string line;
+  std::string open = "MeshFormat";  // the section being read, "" between sections
+  while (cursor.next_line(line)) {
+    if (!open.empty()) {
+      if (line == "$End" + open) {
+        open.clear();
+      } else if (is_section_opener(line)) {
+        cursor.fail(": its $" + open + " section is not closed by $End" + open +
+                    " before " + line + " (is the file truncated or edited?)");
+      }
+      continue;
+    }
+    if (!is_section_opener(line)) continue;  // Gmsh skips text between sections
+    open = line.substr(1);
+    ++sections_seen[open];
+    if (open == "Nodes" || open == "Elements") check_section_counts(cursor, open, format, tags);
+  }
+  if (!open.empty()) {
+    cursor.fail(": its $" + open + " section is not closed by $End" + open +
+                " (the file is truncated)");
+  }
+  for (const char* required : {"Nodes", "Elements"}) {
+    if (!sections_seen.count(required)) {
+      cursor.fail(" has no $" + std::string(required) +
+                  " section; a volume mesh needs $Nodes and $Elements (mesh it in 3D in Gmsh)");
+    }
+  }
+  reject_duplicate_tags(cursor, tags);
+  return format;
+}
+
+}  // namespace sinew::mesh
