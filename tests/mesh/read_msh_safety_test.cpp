@@ -147,6 +147,33 @@ TEST(ReadMshSafety, MissingEndNodesIsReportedAsAnUnclosedSection) {
   EXPECT_THAT(read_msh_error(path), HasSubstr("$Elements section is not closed by $EndElements"));
 }
 
+TEST(ReadMshSafety, ElementWithAnUndefinedNodeTagIsReported) {
+  // Gmsh 4.8 keeps such an element with a missing node and crashes when it is queried.
+  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const std::string path = directory.file("undefined_node.msh");
+  write_bytes(path,
+              "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+              "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n"
+              "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 18446744073709551615 4\n$EndElements\n");
+  EXPECT_THAT(read_msh_error(path),
+              AllOf(HasSubstr(path), HasSubstr("element 1 refers to node tag 18446744073709551615")));
+  write_bytes(path,
+              "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+              "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n"
+              "$Elements\n1\n7 4 2 0 1 1 2 3 9\n$EndElements\n");
+  EXPECT_THAT(read_msh_error(path), HasSubstr("element 7 refers to node tag 9"));
+}
+
+TEST(ReadMshSafety, NegativePhysicalNameCountIsReported) {
+  // Gmsh 4.8 crashes on it.
+  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const std::string path = directory.file("physical_names.msh");
+  write_bytes(path, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n-1\n3 1 \"body\"\n"
+                    "$EndPhysicalNames\n" + kTetV22.substr(kTetV22.find("$Nodes")));
+  EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr(path), HasSubstr("$PhysicalNames"),
+                                          HasSubstr("\"-1\" where a count")));
+}
+
 template <class T>
 std::string raw(T value) {
   return std::string(reinterpret_cast<const char*>(&value), sizeof(T));

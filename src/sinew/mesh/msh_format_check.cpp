@@ -230,9 +230,24 @@ void reject_duplicate_tags(MshCursor& cursor, std::vector<std::uint64_t>& tags) 
               " given to more than one node in $Nodes); every node needs its own tag");
 }
 
-/// Walks a version 4.1 $Elements section, checking every count; stops at an element type it
-/// does not know (Gmsh reports those).
-void walk_elements_v41(MshCursor& cursor, bool binary) {
+/// The node tags of the $Nodes sections read so far, sorted, to check the nodes of elements.
+class NodeTags {
+ public:
+  explicit NodeTags(std::vector<std::uint64_t> sorted) : sorted_(std::move(sorted)) {}
+  /// Throws InputError unless `tag`, a node of element `element`, is a node tag.
+  void check(MshCursor& cursor, std::uint64_t element, std::uint64_t tag) const {
+    if (std::binary_search(sorted_.begin(), sorted_.end(), tag)) return;
+    cursor.fail(" is malformed: element " + std::to_string(element) + " refers to node tag " +
+                std::to_string(tag) + ", which its $Nodes section does not define");
+  }
+
+ private:
+  std::vector<std::uint64_t> sorted_;
+};
+
+/// Walks a version 4.1 $Elements section, checking every count and node tag; stops at an
+/// element type it does not know (Gmsh reports those).
+void walk_elements_v41(MshCursor& cursor, bool binary, const NodeTags& nodes) {
   const std::string section = "Elements";
   const auto count = [&] {
     return binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
@@ -252,48 +267,130 @@ void walk_elements_v41(MshCursor& cursor, bool binary) {
     small();  // entity tag
     const std::uint64_t type = small();
     const std::uint64_t block_elements = count();
-    const int nodes = nodes_of_element_type(type);
-    const std::uint64_t values_per_element = 1 + static_cast<std::uint64_t>(nodes > 0 ? nodes : 1);
+    const int num_element_nodes = nodes_of_element_type(type);
+    const std::uint64_t values_per_element =
+        1 + static_cast<std::uint64_t>(num_element_nodes > 0 ? num_element_nodes : 1);
     cursor.check_fits(block_elements, binary ? 8 * values_per_element : 2 * values_per_element,
                       "elements in an entity block", section);
-    if (nodes == 0) return;
-    if (binary) {
-      cursor.skip_bytes(block_elements * 8 * values_per_element, section);
-    } else {
-      cursor.skip_tokens(block_elements * values_per_element, section);
+    if (num_element_nodes == 0) return;
+    for (std::uint64_t e = 0; e < block_elements; ++e) {
+      const std::uint64_t element = count();
+      for (int k = 0; k < num_element_nodes; ++k) nodes.check(cursor, element, count());
     }
   }
 }
 
-/// Checks the counts at the start of a $Nodes or $Elements section (all of them for version
-/// 4.1); appends the node tags of versions 2.2 and 4.1 to `tags`.
-void check_section_counts(MshCursor& cursor, const std::string& section,
-                          const MshFileFormat& format, std::vector<std::uint64_t>& tags) {
-  const bool nodes = section == "Nodes";
-  if (format.version == 4.1) {
-    if (nodes) {
-      walk_nodes_v41(cursor, format.binary, tags);
-    } else {
-      walk_elements_v41(cursor, format.binary);
+/// Walks a version 2.2 $Elements section after its count of `num_elements`, checking the counts
+/// of binary blocks and every node tag; stops at an element type it does not know.
+void walk_elements_v22(MshCursor& cursor, bool binary, std::uint64_t num_elements,
+                       const NodeTags& nodes) {
+  const std::string section = "Elements";
+  const auto value = [&] {
+    return binary ? static_cast<std::uint64_t>(static_cast<std::uint32_t>(cursor.binary<std::int32_t>(section)))
+                  : cursor.ascii_count(section);
+  };
+  std::uint64_t read = 0;
+  while (read < num_elements) {
+    // Binary: blocks of elements of one type "type count num-tags"; ASCII: one per line.
+    std::uint64_t type = 0;
+    std::uint64_t block_elements = 1;
+    std::uint64_t num_tags = 0;
+    if (binary) {
+      type = value();
+      block_elements = value();
+      num_tags = value();
+      if (block_elements == 0 || block_elements > num_elements - read) {
+        cursor.fail(" is malformed: a block of its $Elements section holds " +
+                    std::to_string(block_elements) + " elements, but only " +
+                    std::to_string(num_elements - read) + " remain of the count in its header");
+      }
     }
-    return;
+    const int num_element_nodes = nodes_of_element_type(type);
+    if (binary) {
+      cursor.check_fits(block_elements, 4 * (1 + num_tags + static_cast<std::uint64_t>(num_element_nodes)),
+                        "elements in a block", section);
+    }
+    for (std::uint64_t e = 0; e < block_elements; ++e) {
+      const std::uint64_t element = value();
+      if (!binary) {
+        type = value();
+        num_tags = value();
+        cursor.check_fits(num_tags, 2, "tags of an element", section);
+      }
+      const int count = nodes_of_element_type(type);
+      if (count == 0) return;
+      cursor.check_fits(num_tags, 1, "tags of an element", section);
+      for (std::uint64_t t = 0; t < num_tags; ++t) value();
+      for (int k = 0; k < count; ++k) nodes.check(cursor, element, value());
+    }
+    read += block_elements;
   }
+}
+
+/// Checks a $PhysicalNames section (ASCII in every version): a count, then that many lines
+/// "<dimension 0-3> <tag> \"<name>\"".
+void check_physical_names(MshCursor& cursor) {
+  const std::string section = "PhysicalNames";
+  const std::uint64_t num_names = cursor.ascii_count(section);
+  cursor.check_fits(num_names, 6, "physical names", section);
+  std::string line;
+  cursor.next_line(line);  // the rest of the count's line
+  for (std::uint64_t i = 0; i < num_names; ++i) {
+    if (!cursor.next_line(line)) cursor.truncated(section);
+    std::istringstream fields(line);
+    int dim = -1;
+    long long tag = 0;
+    std::string name;
+    fields >> dim >> tag >> std::ws;
+    std::getline(fields, name);
+    if (fields.bad() || dim < 0 || dim > 3 || tag <= 0 || tag > 2147483647 || name.size() < 2 ||
+        name.front() != '"' || name.back() != '"') {
+      cursor.fail(" is malformed: its $PhysicalNames section holds the line \"" + line.substr(0, 60) +
+                  "\" where \"<dimension 0-3> <positive tag> \\\"<name>\\\"\" belongs");
+    }
+  }
+}
+
+/// Checks a $Nodes section (every count for versions 2.2 and 4.1, the header's for 4.0) and
+/// appends its node tags to `tags`.
+void check_nodes_section(MshCursor& cursor, const MshFileFormat& format,
+                         std::vector<std::uint64_t>& tags) {
+  const std::string section = "Nodes";
+  if (format.version == 4.1) return walk_nodes_v41(cursor, format.binary, tags);
   if (format.version == 4.0) {
     const auto count = [&] {
       return format.binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
     };
     const std::uint64_t num_blocks = count();
-    const std::uint64_t num_items = count();
+    const std::uint64_t num_nodes = count();
     cursor.check_fits(num_blocks, 8, "entity blocks", section);
-    cursor.check_fits(num_items, 8, nodes ? "nodes" : "elements", section);
+    cursor.check_fits(num_nodes, 8, "nodes", section);
     return;
   }
-  // Version 2.2: one ASCII count, then a node (tag and 3 coordinates, 28 bytes in binary) or an
-  // element (at least 8 bytes) per item.
-  const std::uint64_t num_items = cursor.ascii_count(section);
-  cursor.check_fits(num_items, nodes && format.binary ? 28 : 8, nodes ? "nodes" : "elements",
-                    section);
-  if (nodes) walk_nodes_v22(cursor, format.binary, num_items, tags);
+  // Version 2.2: an ASCII count, then a node (tag and 3 coordinates, 28 bytes in binary).
+  const std::uint64_t num_nodes = cursor.ascii_count(section);
+  cursor.check_fits(num_nodes, format.binary ? 28 : 8, "nodes", section);
+  walk_nodes_v22(cursor, format.binary, num_nodes, tags);
+}
+
+/// Checks an $Elements section: its counts (every one for versions 2.2 and 4.1, the header's
+/// for 4.0) and, for 2.2 and 4.1, that its elements' nodes are in `nodes`.
+void check_elements_section(MshCursor& cursor, const MshFileFormat& format, const NodeTags& nodes) {
+  const std::string section = "Elements";
+  if (format.version == 4.1) return walk_elements_v41(cursor, format.binary, nodes);
+  if (format.version == 4.0) {
+    const auto count = [&] {
+      return format.binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
+    };
+    const std::uint64_t num_blocks = count();
+    const std::uint64_t num_elements = count();
+    cursor.check_fits(num_blocks, 8, "entity blocks", section);
+    cursor.check_fits(num_elements, 8, "elements", section);
+    return;
+  }
+  const std::uint64_t num_elements = cursor.ascii_count(section);
+  cursor.check_fits(num_elements, 8, "elements", section);
+  walk_elements_v22(cursor, format.binary, num_elements, nodes);
 }
 
 }  // namespace
@@ -340,7 +437,17 @@ MshFileFormat check_msh_file(const std::string& path) {
     if (!is_section_opener(line)) continue;  // Gmsh skips text between sections
     open = line.substr(1);
     ++sections_seen[open];
-    if (open == "Nodes" || open == "Elements") check_section_counts(cursor, open, format, tags);
+    if (open == "PhysicalNames") {
+      check_physical_names(cursor);
+    } else if (open == "Nodes") {
+      check_nodes_section(cursor, format, tags);
+      reject_duplicate_tags(cursor, tags);  // sorts them
+    } else if (open == "Elements") {
+      if (!sections_seen.count("Nodes")) {
+        cursor.fail(": its $Elements section comes before $Nodes; the nodes must come first");
+      }
+      check_elements_section(cursor, format, NodeTags(tags));
+    }
   }
   if (!open.empty()) {
     cursor.fail(": its $" + open + " section is not closed by $End" + open +
@@ -352,7 +459,6 @@ MshFileFormat check_msh_file(const std::string& path) {
                   " section; a volume mesh needs $Nodes and $Elements (mesh it in 3D in Gmsh)");
     }
   }
-  reject_duplicate_tags(cursor, tags);
   return format;
 }
 
