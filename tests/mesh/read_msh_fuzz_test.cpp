@@ -38,9 +38,9 @@ namespace sinew::mesh {
 namespace {
 
 #ifdef SINEW_FUZZ_UNDER_SANITIZER
-constexpr int kCasesPerSeedFile = 40;  // the sanitizer build is about ten times slower
+constexpr int kCasesPerSeedFile = 20;  // the sanitizer build is about ten times slower
 #else
-constexpr int kCasesPerSeedFile = 140;
+constexpr int kCasesPerSeedFile = 80;
 #endif
 
 std::string read_bytes(const std::string& path) {
@@ -157,7 +157,7 @@ class Mutator {
     static const std::array<const char*, 12> kValues = {
         "1e400", "-1", "nan", "inf", "-inf", "0", "18446744073709551615", "99999999999999",
         "1000000000000000", "-2147483648", "2147483647", "1e-320"};
-    const bool binary = bytes.find("\n4.1 1 8\n") != std::string::npos;
+    const bool binary = bytes.find(" 1 8\n") != std::string::npos;
     if (binary && pick(2) == 0 && bytes.size() > 8) {
       const std::size_t at = pick(bytes.size() - 8);
       const std::array<std::uint64_t, 5> raw = {~std::uint64_t{0}, std::uint64_t{1} << 50,
@@ -196,8 +196,9 @@ TEST(ReadMshFuzz, DamagedFilesGiveAValidMeshOrAnInputError) {
     double version;
     bool binary;
   };
-  const std::vector<Seed> seeds = {{"v22_ascii", 2.2, false}, {"v41_ascii", 4.1, false},
-                                   {"v41_binary", 4.1, true}};
+  const std::vector<Seed> seeds = {{"v22_ascii", 2.2, false},  {"v22_binary", 2.2, true},
+                                   {"v40_ascii", 4.0, false},
+                                   {"v41_ascii", 4.1, false},  {"v41_binary", 4.1, true}};
   // SINEW_FUZZ_SEED and SINEW_FUZZ_CASES (per seed file) explore further than the fixed run.
   const char* seed_override = std::getenv("SINEW_FUZZ_SEED");
   const char* cases_override = std::getenv("SINEW_FUZZ_CASES");
@@ -228,8 +229,9 @@ TEST(ReadMshFuzz, DamagedFilesGiveAValidMeshOrAnInputError) {
         const TetMesh mesh = read_msh(path);
         validate(mesh, label);
         ++returned;
-      } catch (const InputError&) {
+      } catch (const InputError& error) {
         ++input_errors;
+        if (verbose) std::cerr << "  " << error.what() << std::endl;
       } catch (const std::exception& error) {
         ++other_errors;
         ADD_FAILURE() << label << ": " << typeid(error).name() << ": " << error.what();

@@ -265,7 +265,12 @@ TetMesh tet_mesh_from_gmsh_model() {
     gmsh::model::getPhysicalGroupsForEntity(dim, volume, volume_groups);
     Index region = -1;
     if (!volume_groups.empty()) {
-      region = region_of_group.at(*std::min_element(volume_groups.begin(), volume_groups.end()));
+      const int group = *std::min_element(volume_groups.begin(), volume_groups.end());
+      const auto found = region_of_group.find(group);
+      // Gmsh may not list a group it read with a malformed tag among the physical groups.
+      region = found != region_of_group.end()
+                   ? found->second
+                   : find_or_append(mesh.region_names, physical_group_name(dim, group));
     }
     std::vector<std::size_t> element_tags;
     std::vector<std::size_t> element_nodes;

@@ -60,6 +60,12 @@ class MshCursor {
     return true;
   }
 
+  /// Skips the rest of the current line.
+  void skip_line() {
+    std::string rest;
+    std::getline(in_, rest);
+  }
+
   std::uintmax_t remaining() {
     const auto position = in_.tellg();
     if (position < 0) return 0;
@@ -145,6 +151,10 @@ MshFileFormat read_format(MshCursor& cursor) {
                 "data size 8, e.g. \"4.1 0 8\" (re-export it from Gmsh)");
   }
   format.binary = file_type == 1;
+  if (format.binary && format.version == 4.0) {
+    cursor.fail(" is a binary MSH 4.0 file, which sinew does not read; re-export it from Gmsh as "
+                "MSH 4.1 (Mesh.MshFileVersion = 4.1) or as ASCII");
+  }
   if (format.binary) {
     const int one = cursor.binary<int>("MeshFormat");
     if (one != 1) {
@@ -155,9 +165,10 @@ MshFileFormat read_format(MshCursor& cursor) {
   return format;
 }
 
-/// Walks a version 4.1 $Nodes section up to its last coordinate, checking every count;
-/// appends the node tags to `tags`.
-void walk_nodes_v41(MshCursor& cursor, bool binary, std::vector<std::uint64_t>& tags) {
+/// Walks a version 4.0 (ASCII) or 4.1 $Nodes section up to its last coordinate, checking every
+/// count; appends the node tags to `tags`. Version 4.1 gives each entity block's tags, then
+/// its coordinates; 4.0 a tag before each node's coordinates, and fewer header fields.
+void walk_nodes_v4(MshCursor& cursor, bool binary, bool v40, std::vector<std::uint64_t>& tags) {
   const std::string section = "Nodes";
   const auto count = [&] {
     return binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
@@ -168,13 +179,16 @@ void walk_nodes_v41(MshCursor& cursor, bool binary, std::vector<std::uint64_t>& 
   };
   const std::uint64_t num_blocks = count();
   const std::uint64_t num_nodes = count();
-  count();  // min tag
-  count();  // max tag
+  if (!v40) {
+    count();  // min tag
+    count();  // max tag
+  }
   cursor.check_fits(num_blocks, binary ? 20 : 8, "entity blocks", section);
   cursor.check_fits(num_nodes, binary ? 32 : 8, "nodes", section);
   for (std::uint64_t b = 0; b < num_blocks; ++b) {
-    const std::uint64_t dim = small();
-    small();  // entity tag
+    std::uint64_t dim = small();
+    const std::uint64_t entity = small();
+    if (v40) dim = entity;  // 4.0: tag, then dimension
     const std::uint64_t parametric = small();
     const std::uint64_t block_nodes = count();
     if (dim > 3 || parametric > 1) {
@@ -185,6 +199,13 @@ void walk_nodes_v41(MshCursor& cursor, bool binary, std::vector<std::uint64_t>& 
     const std::uint64_t values_per_node = 3 + (parametric ? dim : 0);
     cursor.check_fits(block_nodes, binary ? 8 * (1 + values_per_node) : 2 * (1 + values_per_node),
                       "nodes in an entity block", section);
+    if (v40) {
+      for (std::uint64_t i = 0; i < block_nodes; ++i) {
+        tags.push_back(count());
+        cursor.skip_tokens(values_per_node, section);
+      }
+      continue;
+    }
     for (std::uint64_t i = 0; i < block_nodes; ++i) tags.push_back(count());
     if (binary) {
       cursor.skip_bytes(block_nodes * 8 * values_per_node, section);
@@ -245,9 +266,21 @@ class NodeTags {
   std::vector<std::uint64_t> sorted_;
 };
 
-/// Walks a version 4.1 $Elements section, checking every count and node tag; stops at an
-/// element type it does not know (Gmsh reports those).
-void walk_elements_v41(MshCursor& cursor, bool binary, const NodeTags& nodes) {
+/// Throws InputError unless `type` is an element type of nodes_of_element_type(); Gmsh 4.8
+/// aborts on types it does not know.
+int checked_nodes_of_element_type(MshCursor& cursor, std::uint64_t type) {
+  const int nodes = nodes_of_element_type(type);
+  if (nodes == 0) {
+    cursor.fail(" holds elements of type " + std::to_string(type) +
+                ", which sinew does not read (it reads Gmsh element types 1-19; its meshes are "
+                "linear tetrahedra, type 4)");
+  }
+  return nodes;
+}
+
+/// Walks a version 4.0 (ASCII) or 4.1 $Elements section, checking every count, element type
+/// and node tag.
+void walk_elements_v4(MshCursor& cursor, bool binary, bool v40, const NodeTags& nodes) {
   const std::string section = "Elements";
   const auto count = [&] {
     return binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
@@ -258,21 +291,21 @@ void walk_elements_v41(MshCursor& cursor, bool binary, const NodeTags& nodes) {
   };
   const std::uint64_t num_blocks = count();
   const std::uint64_t num_elements = count();
-  count();  // min tag
-  count();  // max tag
+  if (!v40) {
+    count();  // min tag
+    count();  // max tag
+  }
   cursor.check_fits(num_blocks, binary ? 20 : 8, "entity blocks", section);
   cursor.check_fits(num_elements, binary ? 16 : 4, "elements", section);
   for (std::uint64_t b = 0; b < num_blocks; ++b) {
-    small();  // entity dimension
-    small();  // entity tag
+    small();  // entity dimension (4.1) or tag (4.0)
+    small();  // entity tag (4.1) or dimension (4.0)
     const std::uint64_t type = small();
     const std::uint64_t block_elements = count();
-    const int num_element_nodes = nodes_of_element_type(type);
-    const std::uint64_t values_per_element =
-        1 + static_cast<std::uint64_t>(num_element_nodes > 0 ? num_element_nodes : 1);
+    const int num_element_nodes = checked_nodes_of_element_type(cursor, type);
+    const auto values_per_element = 1 + static_cast<std::uint64_t>(num_element_nodes);
     cursor.check_fits(block_elements, binary ? 8 * values_per_element : 2 * values_per_element,
                       "elements in an entity block", section);
-    if (num_element_nodes == 0) return;
     for (std::uint64_t e = 0; e < block_elements; ++e) {
       const std::uint64_t element = count();
       for (int k = 0; k < num_element_nodes; ++k) nodes.check(cursor, element, count());
@@ -281,7 +314,7 @@ void walk_elements_v41(MshCursor& cursor, bool binary, const NodeTags& nodes) {
 }
 
 /// Walks a version 2.2 $Elements section after its count of `num_elements`, checking the counts
-/// of binary blocks and every node tag; stops at an element type it does not know.
+/// of binary blocks, every element type and every node tag.
 void walk_elements_v22(MshCursor& cursor, bool binary, std::uint64_t num_elements,
                        const NodeTags& nodes) {
   const std::string section = "Elements";
@@ -305,7 +338,7 @@ void walk_elements_v22(MshCursor& cursor, bool binary, std::uint64_t num_element
                     std::to_string(num_elements - read) + " remain of the count in its header");
       }
     }
-    const int num_element_nodes = nodes_of_element_type(type);
+    const int num_element_nodes = binary ? checked_nodes_of_element_type(cursor, type) : 0;
     if (binary) {
       cursor.check_fits(block_elements, 4 * (1 + num_tags + static_cast<std::uint64_t>(num_element_nodes)),
                         "elements in a block", section);
@@ -317,8 +350,7 @@ void walk_elements_v22(MshCursor& cursor, bool binary, std::uint64_t num_element
         num_tags = value();
         cursor.check_fits(num_tags, 2, "tags of an element", section);
       }
-      const int count = nodes_of_element_type(type);
-      if (count == 0) return;
+      const int count = checked_nodes_of_element_type(cursor, type);
       cursor.check_fits(num_tags, 1, "tags of an element", section);
       for (std::uint64_t t = 0; t < num_tags; ++t) value();
       for (int k = 0; k < count; ++k) nodes.check(cursor, element, value());
@@ -351,44 +383,69 @@ void check_physical_names(MshCursor& cursor) {
   }
 }
 
-/// Checks a $Nodes section (every count for versions 2.2 and 4.1, the header's for 4.0) and
-/// appends its node tags to `tags`.
+/// Walks a version 4.0 (ASCII) or 4.1 $Entities section, checking every count: numbers of
+/// points, curves, surfaces and volumes, then each entity's tag, coordinates (a point's 3 in
+/// 4.1, a bounding box's 6 otherwise), physical tags and (curves and up) bounding entities.
+void walk_entities_v4(MshCursor& cursor, bool binary, bool v40) {
+  const std::string section = "Entities";
+  const auto count = [&] {
+    return binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
+  };
+  const auto skip_ints = [&](std::uint64_t n) {
+    if (binary) {
+      cursor.skip_bytes(4 * n, section);
+    } else {
+      cursor.skip_tokens(n, section);
+    }
+  };
+  const auto skip_doubles = [&](std::uint64_t n) {
+    if (binary) {
+      cursor.skip_bytes(8 * n, section);
+    } else {
+      cursor.skip_tokens(n, section);
+    }
+  };
+  std::array<std::uint64_t, 4> num_entities{};
+  for (auto& n : num_entities) {
+    n = count();
+    cursor.check_fits(n, binary ? 20 : 8, "entities", section);
+  }
+  for (int dim = 0; dim < 4; ++dim) {
+    for (std::uint64_t e = 0; e < num_entities[static_cast<std::size_t>(dim)]; ++e) {
+      skip_ints(1);  // tag
+      skip_doubles(dim == 0 && !v40 ? 3 : 6);
+      const std::uint64_t num_physicals = count();
+      cursor.check_fits(num_physicals, binary ? 4 : 2, "physical tags of an entity", section);
+      skip_ints(num_physicals);
+      if (dim == 0) continue;
+      const std::uint64_t num_bounding = count();
+      cursor.check_fits(num_bounding, binary ? 4 : 2, "bounding entities of an entity", section);
+      skip_ints(num_bounding);
+    }
+  }
+}
+
+/// Checks a $Nodes section (every count) and appends its node tags to `tags`.
 void check_nodes_section(MshCursor& cursor, const MshFileFormat& format,
                          std::vector<std::uint64_t>& tags) {
   const std::string section = "Nodes";
-  if (format.version == 4.1) return walk_nodes_v41(cursor, format.binary, tags);
-  if (format.version == 4.0) {
-    const auto count = [&] {
-      return format.binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
-    };
-    const std::uint64_t num_blocks = count();
-    const std::uint64_t num_nodes = count();
-    cursor.check_fits(num_blocks, 8, "entity blocks", section);
-    cursor.check_fits(num_nodes, 8, "nodes", section);
-    return;
-  }
+  if (format.version >= 4.0) return walk_nodes_v4(cursor, format.binary, format.version == 4.0, tags);
   // Version 2.2: an ASCII count, then a node (tag and 3 coordinates, 28 bytes in binary).
   const std::uint64_t num_nodes = cursor.ascii_count(section);
+  if (format.binary) cursor.skip_line();  // binary data start on the next line
   cursor.check_fits(num_nodes, format.binary ? 28 : 8, "nodes", section);
   walk_nodes_v22(cursor, format.binary, num_nodes, tags);
 }
 
-/// Checks an $Elements section: its counts (every one for versions 2.2 and 4.1, the header's
-/// for 4.0) and, for 2.2 and 4.1, that its elements' nodes are in `nodes`.
+/// Checks an $Elements section: every count and element type, and that its elements' nodes
+/// are in `nodes`.
 void check_elements_section(MshCursor& cursor, const MshFileFormat& format, const NodeTags& nodes) {
   const std::string section = "Elements";
-  if (format.version == 4.1) return walk_elements_v41(cursor, format.binary, nodes);
-  if (format.version == 4.0) {
-    const auto count = [&] {
-      return format.binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
-    };
-    const std::uint64_t num_blocks = count();
-    const std::uint64_t num_elements = count();
-    cursor.check_fits(num_blocks, 8, "entity blocks", section);
-    cursor.check_fits(num_elements, 8, "elements", section);
-    return;
+  if (format.version >= 4.0) {
+    return walk_elements_v4(cursor, format.binary, format.version == 4.0, nodes);
   }
   const std::uint64_t num_elements = cursor.ascii_count(section);
+  if (format.binary) cursor.skip_line();
   cursor.check_fits(num_elements, 8, "elements", section);
   walk_elements_v22(cursor, format.binary, num_elements, nodes);
 }
@@ -439,6 +496,8 @@ MshFileFormat check_msh_file(const std::string& path) {
     ++sections_seen[open];
     if (open == "PhysicalNames") {
       check_physical_names(cursor);
+    } else if (open == "Entities" && format.version >= 4.0) {
+      walk_entities_v4(cursor, format.binary, format.version == 4.0);
     } else if (open == "Nodes") {
       check_nodes_section(cursor, format, tags);
       reject_duplicate_tags(cursor, tags);  // sorts them
