@@ -164,6 +164,17 @@ TEST(ReadMshSafety, ElementWithAnUndefinedNodeTagIsReported) {
   EXPECT_THAT(read_msh_error(path), HasSubstr("element 7 refers to node tag 9"));
 }
 
+TEST(ReadMshSafety, UnknownElementTypeIsReported) {
+  // Gmsh 4.8 aborts on an assertion when it meets an element type it does not know.
+  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const std::string path = directory.file("unknown_type.msh");
+  write_bytes(path,
+              "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+              "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n"
+              "$Elements\n1\n1 1028 2 0 1 1 2 3 4\n$EndElements\n");
+  EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr(path), HasSubstr("elements of type 1028")));
+}
+
 TEST(ReadMshSafety, NegativePhysicalNameCountIsReported) {
   // Gmsh 4.8 crashes on it.
   const testing::TemporaryDirectory directory("sinew-msh-safety");

@@ -204,6 +204,7 @@ TEST_P(ReadMshFormat, ScalarNodeDataBecomeNodeFields) {
 
 INSTANTIATE_TEST_SUITE_P(Formats, ReadMshFormat,
                          ::testing::Values(MshFormat{"v22_ascii", 2.2, false},
+                                           MshFormat{"v22_binary", 2.2, true},
                                            MshFormat{"v41_ascii", 4.1, false},
                                            MshFormat{"v41_binary", 4.1, true}),
                          [](const auto& info) { return info.param.name; });
