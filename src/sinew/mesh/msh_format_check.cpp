@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -319,8 +318,8 @@ void walk_elements_v22(MshCursor& cursor, bool binary, std::uint64_t num_element
                        const NodeTags& nodes) {
   const std::string section = "Elements";
   const auto value = [&] {
-    return binary ? static_cast<std::uint64_t>(static_cast<std::uint32_t>(cursor.binary<std::int32_t>(section)))
-                  : cursor.ascii_count(section);
+    if (!binary) return cursor.ascii_count(section);
+    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(cursor.binary<std::int32_t>(section)));
   };
   std::uint64_t read = 0;
   while (read < num_elements) {
@@ -340,8 +339,8 @@ void walk_elements_v22(MshCursor& cursor, bool binary, std::uint64_t num_element
     }
     const int num_element_nodes = binary ? checked_nodes_of_element_type(cursor, type) : 0;
     if (binary) {
-      cursor.check_fits(block_elements, 4 * (1 + num_tags + static_cast<std::uint64_t>(num_element_nodes)),
-                        "elements in a block", section);
+      const auto ints_per_element = 1 + num_tags + static_cast<std::uint64_t>(num_element_nodes);
+      cursor.check_fits(block_elements, 4 * ints_per_element, "elements in a block", section);
     }
     for (std::uint64_t e = 0; e < block_elements; ++e) {
       const std::uint64_t element = value();
@@ -377,8 +376,8 @@ void check_physical_names(MshCursor& cursor) {
     std::getline(fields, name);
     if (fields.bad() || dim < 0 || dim > 3 || tag <= 0 || tag > 2147483647 || name.size() < 2 ||
         name.front() != '"' || name.back() != '"') {
-      cursor.fail(" is malformed: its $PhysicalNames section holds the line \"" + line.substr(0, 60) +
-                  "\" where \"<dimension 0-3> <positive tag> \\\"<name>\\\"\" belongs");
+      cursor.fail(" is malformed: its $PhysicalNames section holds the line \"" +
+                  line.substr(0, 60) + "\" where \"<dimension 0-3> <positive tag> \\\"<name>\\\"\" belongs");
     }
   }
 }
@@ -429,7 +428,9 @@ void walk_entities_v4(MshCursor& cursor, bool binary, bool v40) {
 void check_nodes_section(MshCursor& cursor, const MshFileFormat& format,
                          std::vector<std::uint64_t>& tags) {
   const std::string section = "Nodes";
-  if (format.version >= 4.0) return walk_nodes_v4(cursor, format.binary, format.version == 4.0, tags);
+  if (format.version >= 4.0) {
+    return walk_nodes_v4(cursor, format.binary, format.version == 4.0, tags);
+  }
   // Version 2.2: an ASCII count, then a node (tag and 3 coordinates, 28 bytes in binary).
   const std::uint64_t num_nodes = cursor.ascii_count(section);
   if (format.binary) cursor.skip_line();  // binary data start on the next line
@@ -470,9 +471,10 @@ MshFileFormat check_msh_file(const std::string& path) {
   const std::uintmax_t size = std::filesystem::file_size(path, error);
   if (error) throw InputError(context + " cannot be read: " + error.message());
   if (size > kMaxMshFileBytes) {
-    throw InputError(context + " is " + std::to_string(size) + " bytes long; sinew reads mesh files of at most " +
-                     std::to_string(kMaxMshFileBytes) + " bytes (2 GiB): save the mesh in binary (Mesh.Binary = 1) "
-                     "or coarsen it");
+    throw InputError(context + " is " + std::to_string(size) +
+                     " bytes long; sinew reads mesh files of at most " +
+                     std::to_string(kMaxMshFileBytes) +
+                     " bytes (2 GiB): save the mesh in binary (Mesh.Binary = 1) or coarsen it");
   }
 
   MshCursor cursor(path, size);
