@@ -85,6 +85,30 @@ TEST(ReadMshSafety, ScriptAfterAnMshHeaderIsNotRun) {
   EXPECT_FALSE(std::filesystem::exists(marker));
 }
 
+TEST(ReadMshSafety, OptionFileBesideTheMeshIsNotRun) {
+  // Gmsh, opening "tet.msh", also runs "tet.msh.opt" as a script when it exists.
+  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const std::string marker = directory.file("pwned");
+  const std::string path = directory.file("tet.msh");
+  write_bytes(path, kTetV22);
+  write_bytes(path + ".opt", script_touching(marker));
+  EXPECT_EQ(read_msh(path).num_tets(), 1);
+  EXPECT_FALSE(std::filesystem::exists(marker));
+}
+
+TEST(ReadMshSafety, GmshMessagesNameTheUsersFile) {
+  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const std::string path = directory.file("bad_entity.msh");
+  // Passes sinew's checks; Gmsh rejects the element's unknown entity and names the file.
+  write_bytes(path,
+              "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+              "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n"
+              "$Elements\n1 1 1 1\n3 9 4 1\n1 1 2 3 4\n$EndElements\n");
+  const std::string message = read_msh_error(path);
+  EXPECT_THAT(message, HasSubstr("Error loading '" + path + "'"));
+  EXPECT_THAT(message, Not(HasSubstr("sinew-input-")));
+}
+
 TEST(ReadMshSafety, FifoIsRefusedWithoutBlocking) {
   const testing::TemporaryDirectory directory("sinew-msh-safety");
   const std::string path = directory.file("pipe.msh");

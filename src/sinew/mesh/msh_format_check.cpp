@@ -43,8 +43,9 @@ int nodes_of_element_type(std::uint64_t type) {
 /// every problem as an InputError that names the file.
 class MshCursor {
  public:
-  MshCursor(const std::string& path, std::uintmax_t size)
-      : in_(path, std::ios::binary), size_(size), context_("mesh file \"" + path + "\"") {
+  /// Reads `path`, `size` bytes long; messages name `shown_path`.
+  MshCursor(const std::string& path, std::uintmax_t size, const std::string& shown_path)
+      : in_(path, std::ios::binary), size_(size), context_("mesh file \"" + shown_path + "\"") {
     if (!in_) fail(" cannot be opened for reading");
   }
 
@@ -453,7 +454,7 @@ void check_elements_section(MshCursor& cursor, const MshFileFormat& format, cons
 
 }  // namespace
 
-MshFileFormat check_msh_file(const std::string& path) {
+void check_msh_path(const std::string& path) {
   const std::string context = "mesh file \"" + path + "\"";
   std::error_code error;
   const auto status = std::filesystem::status(path, error);
@@ -476,8 +477,16 @@ MshFileFormat check_msh_file(const std::string& path) {
                      std::to_string(kMaxMshFileBytes) +
                      " bytes (2 GiB): save the mesh in binary (Mesh.Binary = 1) or coarsen it");
   }
+}
 
-  MshCursor cursor(path, size);
+MshFileFormat check_msh_content(const std::string& path, const std::string& shown_path) {
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error || size > kMaxMshFileBytes) {
+    throw InputError("mesh file \"" + shown_path + "\" cannot be read" +
+                     (error ? ": " + error.message() : std::string(" (it grew past 2 GiB)")));
+  }
+  MshCursor cursor(path, size, shown_path);
   const MshFileFormat format = read_format(cursor);
   std::map<std::string, int> sections_seen;
   std::vector<std::uint64_t> tags;  // of every node in $Nodes
@@ -521,6 +530,11 @@ MshFileFormat check_msh_file(const std::string& path) {
     }
   }
   return format;
+}
+
+MshFileFormat check_msh_file(const std::string& path) {
+  check_msh_path(path);
+  return check_msh_content(path, path);
 }
 
 }  // namespace sinew::mesh

@@ -23,13 +23,20 @@ struct MshFileFormat {
 };
 
 /// Throws InputError naming `path` unless it is a regular file (not a FIFO, device or
-/// directory) named *.msh, at most kMaxMshFileBytes long, whose first line is `$MeshFormat`
-/// followed by a "<version> <file-type> <data-size>" line with version 2.2, 4.0 or 4.1,
-/// file-type 0 (ASCII) or 1 (binary; not for 4.0) and data-size 8, closed by `$EndMeshFormat`;
-/// and whose `$Nodes` and `$Elements` sections are present (nodes first) and closed by
-/// `$EndNodes` / `$EndElements`, every section being closed. Every count of those sections must
-/// fit in the bytes that follow it, node tags must be unique, elements must be of a type 1-19
-/// and refer to defined node tags; `$PhysicalNames` lines must be well formed.
+/// directory) named *.msh, at most kMaxMshFileBytes long. Only looks at the file's status.
+void check_msh_path(const std::string& path);
+
+/// Reads the file at `path` and throws InputError naming `shown_path` unless its first line is
+/// `$MeshFormat` followed by a "<version> <file-type> <data-size>" line with version 2.2, 4.0
+/// or 4.1, file-type 0 (ASCII) or 1 (binary; not for 4.0) and data-size 8, closed by
+/// `$EndMeshFormat`; and its `$Nodes` and `$Elements` sections are present (nodes first) and
+/// closed by `$EndNodes` / `$EndElements`, every section being closed. Every count of those
+/// sections (and of `$Entities`) must fit in the bytes that follow it, node tags must be
+/// unique, elements must be of a type 1-19 and refer to defined node tags; `$PhysicalNames`
+/// lines must be well formed.
+MshFileFormat check_msh_content(const std::string& path, const std::string& shown_path);
+
+/// check_msh_path(path), then check_msh_content(path, path).
 MshFileFormat check_msh_file(const std::string& path);
 
 }  // namespace sinew::mesh

@@ -9,6 +9,7 @@
 #include "sinew/mesh/gmsh_model.hpp"
 #include "sinew/mesh/gmsh_session.hpp"
 #include "sinew/mesh/msh_format_check.hpp"
+#include "sinew/mesh/private_file_copy.hpp"
 
 namespace sinew::mesh {
 
@@ -20,18 +21,29 @@ std::string join(const std::vector<std::string>& names) {
   return joined;
 }
 
+std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
 }  // namespace
 
 TetMesh read_msh(const std::string& path) {
-  // Only a file that passed check_msh_file reaches Gmsh: anything else could be run as a script.
-  check_msh_file(path);
+  // Only a genuine MSH file reaches Gmsh, which would run anything else as a script; and Gmsh
+  // reads a private copy, the very bytes checked, with no "<name>.opt" script beside it (Gmsh
+  // runs one when it exists). See docs/input-safety.md.
+  check_msh_path(path);
+  const PrivateFileCopy copy(path, "mesh.msh", kMaxMshFileBytes);
+  check_msh_content(copy.path(), path);
   const std::string context = "mesh file \"" + path + "\"";
   TetMesh mesh;
-  {
+  try {
     GmshSession gmsh_session;
     gmsh_session.run(context, [&] {
       try {
-        gmsh::open(path);
+        gmsh::open(copy.path());
       } catch (const std::bad_alloc&) {
         throw InputError(context + " is malformed or truncated (a count in it is larger than the "
                                    "file; Gmsh ran out of memory reading it): re-export it from Gmsh");
@@ -62,6 +74,9 @@ TetMesh read_msh(const std::string& path) {
       }
       return model_mesh;
     });
+  } catch (const InputError& error) {
+    // Gmsh's messages name the copy it read.
+    throw InputError(replace_all(error.what(), copy.path(), path));
   }
   validate(mesh, path);
   return mesh;
