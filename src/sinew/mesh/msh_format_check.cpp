@@ -186,9 +186,9 @@ void walk_nodes_v4(MshCursor& cursor, bool binary, bool v40, std::vector<std::ui
   cursor.check_fits(num_blocks, binary ? 20 : 8, "entity blocks", section);
   cursor.check_fits(num_nodes, binary ? 32 : 8, "nodes", section);
   for (std::uint64_t b = 0; b < num_blocks; ++b) {
-    std::uint64_t dim = small();
-    const std::uint64_t entity = small();
-    if (v40) dim = entity;  // 4.0: tag, then dimension
+    const std::uint64_t first = small();   // 4.1: entity dimension; 4.0: entity tag
+    const std::uint64_t second = small();  // 4.1: entity tag; 4.0: entity dimension
+    const std::uint64_t dim = v40 ? second : first;
     const std::uint64_t parametric = small();
     const std::uint64_t block_nodes = count();
     if (dim > 3 || parametric > 1) {
