@@ -1,6 +1,7 @@
 /// @file read_msh_fuzz_test.cpp
-/// Seeded, bounded fuzzing of read_msh: small valid .msh files (ASCII 2.2, ASCII 4.1, binary
-/// 4.1) are damaged by byte flips, truncation, line deletion and duplication, numbers replaced
+/// Seeded, bounded fuzzing of read_msh: small valid .msh files (ASCII and binary 2.2 and 4.1,
+/// ASCII 4.0, two of them with $NodeData) are damaged by byte flips, truncation, line deletion
+/// and duplication, numbers replaced
 /// by huge, negative or non-finite values, and removed sections. Every case must return a mesh
 /// that passes validate() or throw sinew::InputError; any other exception fails the test (and a
 /// crash or hang shows as one).
@@ -38,9 +39,9 @@ namespace sinew::mesh {
 namespace {
 
 #ifdef SINEW_FUZZ_UNDER_SANITIZER
-constexpr int kCasesPerSeedFile = 20;  // the sanitizer build is about ten times slower
+constexpr int kCasesPerSeedFile = 15;  // the sanitizer build is about ten times slower
 #else
-constexpr int kCasesPerSeedFile = 80;
+constexpr int kCasesPerSeedFile = 60;
 #endif
 
 std::string read_bytes(const std::string& path) {
@@ -52,8 +53,9 @@ void write_bytes(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
 
-/// A coarse mesh of the unit cube with a volume group and a face group, saved as `path`.
-void write_seed_file(const std::string& path, double version, bool binary) {
+/// A coarse mesh of the unit cube with a volume group and a face group, saved as `path`; with
+/// `node_data`, followed by a scalar and a vector $NodeData block.
+void write_seed_file(const std::string& path, double version, bool binary, bool node_data) {
   GmshSession session;
   session.run("writing " + path, [&] {
     gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
@@ -66,6 +68,22 @@ void write_seed_file(const std::string& path, double version, bool binary) {
     gmsh::option::setNumber("Mesh.MshFileVersion", version);
     gmsh::option::setNumber("Mesh.Binary", binary ? 1 : 0);
     gmsh::write(path);
+    if (!node_data) return;
+    std::string model;
+    gmsh::model::getCurrent(model);
+    std::vector<std::size_t> tags;
+    std::vector<double> coordinates;
+    std::vector<double> unused_parametric;
+    gmsh::model::mesh::getNodes(tags, coordinates, unused_parametric);
+    std::vector<double> height;
+    for (std::size_t i = 0; i < tags.size(); ++i) height.push_back(coordinates[3 * i + 2]);
+    gmsh::option::setNumber("PostProcessing.SaveMesh", 0);
+    const int scalar = gmsh::view::add("height");
+    gmsh::view::addHomogeneousModelData(scalar, 0, model, "NodeData", tags, height, 0.0, 1);
+    gmsh::view::write(scalar, path, /*append=*/true);
+    const int vector = gmsh::view::add("position");
+    gmsh::view::addHomogeneousModelData(vector, 0, model, "NodeData", tags, coordinates, 0.0, 3);
+    gmsh::view::write(vector, path, /*append=*/true);
   });
 }
 
@@ -195,10 +213,13 @@ TEST(ReadMshFuzz, DamagedFilesGiveAValidMeshOrAnInputError) {
     std::string name;
     double version;
     bool binary;
+    bool node_data;
   };
-  const std::vector<Seed> seeds = {{"v22_ascii", 2.2, false},  {"v22_binary", 2.2, true},
-                                   {"v40_ascii", 4.0, false},
-                                   {"v41_ascii", 4.1, false},  {"v41_binary", 4.1, true}};
+  const std::vector<Seed> seeds = {
+      {"v22_ascii", 2.2, false, false},       {"v22_binary", 2.2, true, false},
+      {"v40_ascii", 4.0, false, false},       {"v41_ascii", 4.1, false, false},
+      {"v41_binary", 4.1, true, false},       {"v22_ascii_fields", 2.2, false, true},
+      {"v41_binary_fields", 4.1, true, true}};
   // SINEW_FUZZ_SEED and SINEW_FUZZ_CASES (per seed file) explore further than the fixed run.
   const char* seed_override = std::getenv("SINEW_FUZZ_SEED");
   const char* cases_override = std::getenv("SINEW_FUZZ_CASES");
@@ -210,7 +231,7 @@ TEST(ReadMshFuzz, DamagedFilesGiveAValidMeshOrAnInputError) {
   int other_errors = 0;
   for (const auto& seed : seeds) {
     const std::string seed_path = directory.file(seed.name + "_seed.msh");
-    write_seed_file(seed_path, seed.version, seed.binary);
+    write_seed_file(seed_path, seed.version, seed.binary, seed.node_data);
     const std::string original = read_bytes(seed_path);
     ASSERT_GT(read_msh(seed_path).num_tets(), 0) << seed.name;
     const std::string path = directory.file("case.msh");

@@ -383,6 +383,79 @@ void check_physical_names(MshCursor& cursor) {
   }
 }
 
+/// Checks a $NodeData, $ElementData or $ElementNodeData section (Gmsh reference manual, "MSH
+/// file format"): counted string, real and integer tags (ASCII), the integer tags being the
+/// time step, the number of components and the number of entities; then per entity its tag,
+/// (for $ElementNodeData) its number of nodes, and the values, as text or binary. Gmsh 4.8
+/// allocates from these counts and crashes or exhausts memory on wrong ones.
+void check_data_section(MshCursor& cursor, const std::string& section, bool binary) {
+  const bool per_element_node = section == "ElementNodeData";
+  const std::uint64_t num_strings = cursor.ascii_count(section);
+  cursor.check_fits(num_strings, 2, "string tags", section);
+  std::string line;
+  cursor.skip_line();
+  for (std::uint64_t i = 0; i < num_strings; ++i) {
+    if (!cursor.next_line(line)) cursor.truncated(section);
+  }
+  const std::uint64_t num_reals = cursor.ascii_count(section);
+  cursor.check_fits(num_reals, 2, "real tags", section);
+  cursor.skip_tokens(num_reals, section);
+  const std::uint64_t num_integers = cursor.ascii_count(section);
+  cursor.check_fits(num_integers, 2, "integer tags", section);
+  std::vector<std::uint64_t> integers;
+  for (std::uint64_t i = 0; i < num_integers; ++i) integers.push_back(cursor.ascii_count(section));
+  if (integers.size() < 3) return;  // Gmsh reports the missing tags
+  const std::uint64_t components = integers[1];
+  const std::uint64_t entities = integers[2];
+  if (components == 0 || components > 9) {
+    cursor.fail(" is malformed: its $" + section + " section has " + std::to_string(components) +
+                " components per value (Gmsh data have 1 to 9)");
+  }
+  cursor.check_fits(entities, binary ? 4 + 8 * components : 2 * (1 + components), "values", section);
+  if (binary) cursor.skip_line();  // binary data start on the next line
+  for (std::uint64_t e = 0; e < entities; ++e) {
+    std::uint64_t nodes = 1;
+    if (binary) {
+      cursor.binary<std::int32_t>(section);  // tag
+      if (per_element_node) nodes = static_cast<std::uint32_t>(cursor.binary<std::int32_t>(section));
+    } else {
+      cursor.ascii_count(section);  // tag
+      if (per_element_node) nodes = cursor.ascii_count(section);
+    }
+    cursor.check_fits(nodes, binary ? 8 * components : 2 * components, "nodes of an element", section);
+    if (binary) {
+      cursor.skip_bytes(8 * nodes * components, section);
+    } else {
+      cursor.skip_tokens(nodes * components, section);
+    }
+  }
+}
+
+/// Checks an $InterpolationScheme section (ASCII in every version; Gmsh writes one with
+/// post-processing views): a quoted name, a count of element topologies, and for each a
+/// topology number, a count of matrices and each matrix as "<rows> <columns>" and its values.
+/// Gmsh 4.8 aborts on a negative matrix size.
+void check_interpolation_scheme(MshCursor& cursor) {
+  const std::string section = "InterpolationScheme";
+  std::string name;
+  cursor.next_line(name);
+  const std::uint64_t num_topologies = cursor.ascii_count(section);
+  cursor.check_fits(num_topologies, 4, "element topologies", section);
+  for (std::uint64_t t = 0; t < num_topologies; ++t) {
+    cursor.ascii_count(section);  // topology
+    const std::uint64_t num_matrices = cursor.ascii_count(section);
+    cursor.check_fits(num_matrices, 4, "interpolation matrices", section);
+    for (std::uint64_t m = 0; m < num_matrices; ++m) {
+      const std::uint64_t rows = cursor.ascii_count(section);
+      const std::uint64_t columns = cursor.ascii_count(section);
+      cursor.check_fits(rows, 2, "matrix rows", section);
+      cursor.check_fits(columns, 2, "matrix columns", section);
+      if (rows > 0) cursor.check_fits(columns, 2 * rows, "matrix columns (times its rows)", section);
+      cursor.skip_tokens(rows * columns, section);
+    }
+  }
+}
+
 /// Walks a version 4.0 (ASCII) or 4.1 $Entities section, checking every count: numbers of
 /// points, curves, surfaces and volumes, then each entity's tag, coordinates (a point's 3 in
 /// 4.1, a bounding box's 6 otherwise), physical tags and (curves and up) bounding entities.
@@ -507,6 +580,10 @@ MshFileFormat check_msh_content(const std::string& path, const std::string& show
     ++sections_seen[open];
     if (open == "PhysicalNames") {
       check_physical_names(cursor);
+    } else if (open == "NodeData" || open == "ElementData" || open == "ElementNodeData") {
+      check_data_section(cursor, open, format.binary);
+    } else if (open == "InterpolationScheme") {
+      check_interpolation_scheme(cursor);
     } else if (open == "Entities" && format.version >= 4.0) {
       walk_entities_v4(cursor, format.binary, format.version == 4.0);
     } else if (open == "Nodes") {
