@@ -199,6 +199,20 @@ TEST(ReadMshSafety, UnknownElementTypeIsReported) {
   EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr(path), HasSubstr("elements of type 1028")));
 }
 
+TEST(ReadMshSafety, NodeDataForAnUndefinedNodeIsReported) {
+  // Gmsh 4.8 indexes its storage with the tag and crashes.
+  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const std::string path = directory.file("node_data.msh");
+  write_bytes(path, kTetV22 + "$NodeData\n1\n\"f\"\n1\n0\n3\n0\n1\n2\n1 0.5\n2147483647 1\n"
+                              "$EndNodeData\n");
+  EXPECT_THAT(read_msh_error(path),
+              AllOf(HasSubstr(path), HasSubstr("$NodeData section gives a value for node tag 2147483647")));
+  // A negative matrix size in an interpolation scheme (Gmsh 4.8 aborts on it).
+  write_bytes(path, kTetV22 + "$InterpolationScheme\n\"s\"\n1\n1\n1\n-2 2\n0 0\n0 0\n"
+                              "$EndInterpolationScheme\n");
+  EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr("$InterpolationScheme"), HasSubstr("\"-2\"")));
+}
+
 TEST(ReadMshSafety, NegativePhysicalNameCountIsReported) {
   // Gmsh 4.8 crashes on it.
   const testing::TemporaryDirectory directory("sinew-msh-safety");

@@ -280,7 +280,8 @@ int checked_nodes_of_element_type(MshCursor& cursor, std::uint64_t type) {
 
 /// Walks a version 4.0 (ASCII) or 4.1 $Elements section, checking every count, element type
 /// and node tag.
-void walk_elements_v4(MshCursor& cursor, bool binary, bool v40, const NodeTags& nodes) {
+void walk_elements_v4(MshCursor& cursor, bool binary, bool v40, const NodeTags& nodes,
+                      std::vector<std::uint64_t>& element_tags) {
   const std::string section = "Elements";
   const auto count = [&] {
     return binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
@@ -308,6 +309,7 @@ void walk_elements_v4(MshCursor& cursor, bool binary, bool v40, const NodeTags& 
                       "elements in an entity block", section);
     for (std::uint64_t e = 0; e < block_elements; ++e) {
       const std::uint64_t element = count();
+      element_tags.push_back(element);
       for (int k = 0; k < num_element_nodes; ++k) nodes.check(cursor, element, count());
     }
   }
@@ -316,7 +318,7 @@ void walk_elements_v4(MshCursor& cursor, bool binary, bool v40, const NodeTags& 
 /// Walks a version 2.2 $Elements section after its count of `num_elements`, checking the counts
 /// of binary blocks, every element type and every node tag.
 void walk_elements_v22(MshCursor& cursor, bool binary, std::uint64_t num_elements,
-                       const NodeTags& nodes) {
+                       const NodeTags& nodes, std::vector<std::uint64_t>& element_tags) {
   const std::string section = "Elements";
   const auto value = [&] {
     if (!binary) return cursor.ascii_count(section);
@@ -345,6 +347,7 @@ void walk_elements_v22(MshCursor& cursor, bool binary, std::uint64_t num_element
     }
     for (std::uint64_t e = 0; e < block_elements; ++e) {
       const std::uint64_t element = value();
+      element_tags.push_back(element);
       if (!binary) {
         type = value();
         num_tags = value();
@@ -387,8 +390,11 @@ void check_physical_names(MshCursor& cursor) {
 /// file format"): counted string, real and integer tags (ASCII), the integer tags being the
 /// time step, the number of components and the number of entities; then per entity its tag,
 /// (for $ElementNodeData) its number of nodes, and the values, as text or binary. Gmsh 4.8
-/// allocates from these counts and crashes or exhausts memory on wrong ones.
-void check_data_section(MshCursor& cursor, const std::string& section, bool binary) {
+/// allocates from these counts and crashes or exhausts memory on wrong ones, or indexes its
+/// storage with an entity tag: each must be in `sorted_tags` (of the nodes for $NodeData, of
+/// the elements otherwise).
+void check_data_section(MshCursor& cursor, const std::string& section, bool binary,
+                        const std::vector<std::uint64_t>& sorted_tags) {
   const bool per_element_node = section == "ElementNodeData";
   const std::uint64_t num_strings = cursor.ascii_count(section);
   cursor.check_fits(num_strings, 2, "string tags", section);
@@ -415,12 +421,18 @@ void check_data_section(MshCursor& cursor, const std::string& section, bool bina
   if (binary) cursor.skip_line();  // binary data start on the next line
   for (std::uint64_t e = 0; e < entities; ++e) {
     std::uint64_t nodes = 1;
+    std::uint64_t tag = 0;
     if (binary) {
-      cursor.binary<std::int32_t>(section);  // tag
+      tag = static_cast<std::uint32_t>(cursor.binary<std::int32_t>(section));
       if (per_element_node) nodes = static_cast<std::uint32_t>(cursor.binary<std::int32_t>(section));
     } else {
-      cursor.ascii_count(section);  // tag
+      tag = cursor.ascii_count(section);
       if (per_element_node) nodes = cursor.ascii_count(section);
+    }
+    if (!std::binary_search(sorted_tags.begin(), sorted_tags.end(), tag)) {
+      cursor.fail(" is malformed: its $" + section + " section gives a value for " +
+                  (section == "NodeData" ? "node" : "element") + " tag " + std::to_string(tag) +
+                  ", which the mesh does not define");
     }
     cursor.check_fits(nodes, binary ? 8 * components : 2 * components, "nodes of an element", section);
     if (binary) {
@@ -514,15 +526,16 @@ void check_nodes_section(MshCursor& cursor, const MshFileFormat& format,
 
 /// Checks an $Elements section: every count and element type, and that its elements' nodes
 /// are in `nodes`.
-void check_elements_section(MshCursor& cursor, const MshFileFormat& format, const NodeTags& nodes) {
+void check_elements_section(MshCursor& cursor, const MshFileFormat& format, const NodeTags& nodes,
+                            std::vector<std::uint64_t>& element_tags) {
   const std::string section = "Elements";
   if (format.version >= 4.0) {
-    return walk_elements_v4(cursor, format.binary, format.version == 4.0, nodes);
+    return walk_elements_v4(cursor, format.binary, format.version == 4.0, nodes, element_tags);
   }
   const std::uint64_t num_elements = cursor.ascii_count(section);
   if (format.binary) cursor.skip_line();
   cursor.check_fits(num_elements, 8, "elements", section);
-  walk_elements_v22(cursor, format.binary, num_elements, nodes);
+  walk_elements_v22(cursor, format.binary, num_elements, nodes, element_tags);
 }
 
 }  // namespace
@@ -562,7 +575,8 @@ MshFileFormat check_msh_content(const std::string& path, const std::string& show
   MshCursor cursor(path, size, shown_path);
   const MshFileFormat format = read_format(cursor);
   std::map<std::string, int> sections_seen;
-  std::vector<std::uint64_t> tags;  // of every node in $Nodes
+  std::vector<std::uint64_t> tags;          // of every node in $Nodes, sorted
+  std::vector<std::uint64_t> element_tags;  // of every element in $Elements, sorted
   std::string line;
   std::string open = "MeshFormat";  // the section being read, "" between sections
   while (cursor.next_line(line)) {
@@ -581,7 +595,7 @@ MshFileFormat check_msh_content(const std::string& path, const std::string& show
     if (open == "PhysicalNames") {
       check_physical_names(cursor);
     } else if (open == "NodeData" || open == "ElementData" || open == "ElementNodeData") {
-      check_data_section(cursor, open, format.binary);
+      check_data_section(cursor, open, format.binary, open == "NodeData" ? tags : element_tags);
     } else if (open == "InterpolationScheme") {
       check_interpolation_scheme(cursor);
     } else if (open == "Entities" && format.version >= 4.0) {
@@ -593,7 +607,8 @@ MshFileFormat check_msh_content(const std::string& path, const std::string& show
       if (!sections_seen.count("Nodes")) {
         cursor.fail(": its $Elements section comes before $Nodes; the nodes must come first");
       }
-      check_elements_section(cursor, format, NodeTags(tags));
+      check_elements_section(cursor, format, NodeTags(tags), element_tags);
+      std::sort(element_tags.begin(), element_tags.end());
     }
   }
   if (!open.empty()) {
