@@ -220,7 +220,9 @@ TEST(ReadMshFuzz, DamagedFilesGiveAValidMeshOrAnInputError) {
       {"v40_ascii", 4.0, false, false},       {"v41_ascii", 4.1, false, false},
       {"v41_binary", 4.1, true, false},       {"v22_ascii_fields", 2.2, false, true},
       {"v41_binary_fields", 4.1, true, true}};
-  // SINEW_FUZZ_SEED and SINEW_FUZZ_CASES (per seed file) explore further than the fixed run.
+  // SINEW_FUZZ_SEED and SINEW_FUZZ_CASES (per seed file) explore further than the fixed run;
+  // SINEW_FUZZ_VERBOSE prints every case and message; SINEW_FUZZ_KEEP=<text> saves the case
+  // whose label contains <text> as "<text>.kept.msh".
   const char* seed_override = std::getenv("SINEW_FUZZ_SEED");
   const char* cases_override = std::getenv("SINEW_FUZZ_CASES");
   Mutator mutator(seed_override ? static_cast<unsigned>(std::stoul(seed_override)) : 18u);
@@ -253,6 +255,8 @@ TEST(ReadMshFuzz, DamagedFilesGiveAValidMeshOrAnInputError) {
       } catch (const InputError& error) {
         ++input_errors;
         if (verbose) std::cerr << "  " << error.what() << std::endl;
+        const char* keep = std::getenv("SINEW_FUZZ_KEEP");
+        if (keep && label.find(keep) != std::string::npos) write_bytes(keep + std::string(".kept.msh"), bytes);
       } catch (const std::exception& error) {
         ++other_errors;
         ADD_FAILURE() << label << ": " << typeid(error).name() << ": " << error.what();
