@@ -31,9 +31,10 @@ void check_msh_path(const std::string& path);
 /// or 4.1, file-type 0 (ASCII) or 1 (binary; not for 4.0) and data-size 8, closed by
 /// `$EndMeshFormat`; and its `$Nodes` and `$Elements` sections are present (nodes first) and
 /// closed by `$EndNodes` / `$EndElements`, every section being closed. Every count of those
-/// sections (and of `$Entities`) must fit in the bytes that follow it, node tags must be
-/// unique, elements must be of a type 1-19 and refer to defined node tags; `$PhysicalNames`
-/// lines must be well formed.
+/// sections (and of `$Entities`, `$PhysicalNames`, `$InterpolationScheme` and the data
+/// sections) must fit in the bytes that follow it, node tags must be unique, elements must be
+/// of a type 1-19 and refer to defined node tags, `$NodeData` values to defined nodes and
+/// `$ElementData` / `$ElementNodeData` values to defined elements.
 MshFileFormat check_msh_content(const std::string& path, const std::string& shown_path);
 
 /// check_msh_path(path), then check_msh_content(path, path).
