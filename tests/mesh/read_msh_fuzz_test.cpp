@@ -39,7 +39,7 @@ namespace sinew::mesh {
 namespace {
 
 #ifdef SINEW_FUZZ_UNDER_SANITIZER
-constexpr int kCasesPerSeedFile = 15;  // the sanitizer build is about ten times slower
+constexpr int kCasesPerSeedFile = 30;  // the sanitizer build is several times slower
 #else
 constexpr int kCasesPerSeedFile = 60;
 #endif
