@@ -68,5 +68,25 @@ TEST(GmshSession, MeshingFailureIsSilentAndReportsGmshsMessage) {
   EXPECT_EQ(err, "");
 }
 
+TEST(GmshSession, EmptyOpenCascadeMessageSaysWhatIsWrong) {
+  // A box thinner than OpenCASCADE's tolerance: OpenCASCADE throws an exception without a
+  // message, which Gmsh logs as a bare "OpenCASCADE exception ".
+  Shape sheet;
+  sheet.kind = Shape::Kind::Box;
+  sheet.min = Vector3::Zero();
+  sheet.max = Vector3(1, 1, 1e-11);
+  GenerateOptions options;
+  options.element_size = 0.5;
+  std::string message;
+  try {
+    generate_mesh({Part{"sheet", sheet}}, options);
+  } catch (const InputError& error) {
+    message = error.what();
+  }
+  EXPECT_THAT(message, AllOf(HasSubstr("part \"sheet\", box"), HasSubstr("degenerate"),
+                             HasSubstr("1e-7")));
+  EXPECT_THAT(message, ::testing::Not(::testing::EndsWith("exception ")));
+}
+
 }  // namespace
 }  // namespace sinew::mesh

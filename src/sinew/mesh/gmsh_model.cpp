@@ -140,6 +140,29 @@ void read_node_fields(TetMesh& mesh, const std::vector<std::size_t>& node_tags) 
   }
 }
 
+/// Throws InputError naming the Gmsh tags of the first nodes (used by tets) with an infinite
+/// or NaN coordinate; `node_tags[kept_positions[v]]` is the tag of mesh node v.
+void reject_non_finite_nodes(const Positions& rest, const std::vector<std::size_t>& node_tags,
+                             const std::vector<Index>& kept_positions) {
+  std::size_t count = 0;
+  std::string first;
+  for (Index v = 0; v < rest.rows(); ++v) {
+    if (rest.row(v).allFinite()) continue;
+    if (count++ < 3) {
+      first += (first.empty() ? "" : "; ") + std::string("node tag ") +
+               std::to_string(node_tags[static_cast<std::size_t>(kept_positions[static_cast<std::size_t>(v)])]) +
+               " at " + show_point(rest, v);
+    }
+  }
+  if (count == 0) return;
+  throw InputError(std::to_string(count) +
+                   (count == 1 ? " node has a non-finite coordinate (infinite, NaN or beyond "
+                                 "1.8e308): "
+                               : " nodes have non-finite coordinates (infinite, NaN or beyond "
+                                 "1.8e308), first: ") +
+                   first);
+}
+
 }  // namespace
 
 void reject_folded_tets(const Positions& rest, const Tets& tets) {
@@ -242,7 +265,12 @@ TetMesh tet_mesh_from_gmsh_model() {
     gmsh::model::getPhysicalGroupsForEntity(dim, volume, volume_groups);
     Index region = -1;
     if (!volume_groups.empty()) {
-      region = region_of_group.at(*std::min_element(volume_groups.begin(), volume_groups.end()));
+      const int group = *std::min_element(volume_groups.begin(), volume_groups.end());
+      const auto found = region_of_group.find(group);
+      // Gmsh may not list a group it read with a malformed tag among the physical groups.
+      region = found != region_of_group.end()
+                   ? found->second
+                   : find_or_append(mesh.region_names, physical_group_name(dim, group));
     }
     std::vector<std::size_t> element_tags;
     std::vector<std::size_t> element_nodes;
@@ -288,6 +316,7 @@ TetMesh tet_mesh_from_gmsh_model() {
     for (int k = 0; k < 4; ++k) mesh.tets(t, k) = new_index[tet_nodes[4 * t + k]];
   }
   mesh.region = Eigen::Map<const IndexVector>(tet_regions.data(), num_tets);
+  reject_non_finite_nodes(mesh.rest, node_tags, kept_positions);
   reject_folded_tets(mesh.rest, mesh.tets);
   orient_positively(mesh.rest, mesh.tets);
 

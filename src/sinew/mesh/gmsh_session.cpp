@@ -20,10 +20,28 @@ thread_local bool this_thread_holds_session = false;
 
 bool is_error_line(const std::string& line) { return line.rfind("Error", 0) == 0; }
 
-/// "Error: foo" -> "foo"
+/// OpenCASCADE's confusion tolerance (Precision::Confusion()), which Gmsh's OCC kernel uses:
+/// shapes or features smaller than this are degenerate to it.
+constexpr const char* kOccTolerance = "1e-7";
+
+/// Gmsh's message, or an explanation when it says nothing.
+std::string explained(std::string message) {
+  while (!message.empty() && (message.back() == ' ' || message.back() == '\t')) message.pop_back();
+  if (message == "OpenCASCADE exception") {
+    // OpenCASCADE threw without a message (Standard_Failure with an empty string), e.g. when
+    // a box is thinner than its tolerance.
+    return std::string("OpenCASCADE failed without a message: the geometry is degenerate, or "
+                       "smaller or thinner than OpenCASCADE's tolerance (") +
+           kOccTolerance + ") in some direction; check its dimensions";
+  }
+  if (message.empty()) return "Gmsh reported an error without a message";
+  return message;
+}
+
+/// "Error: foo" -> "foo", explained.
 std::string without_level(const std::string& line) {
   const auto colon = line.find(": ");
-  return colon == std::string::npos ? line : line.substr(colon + 2);
+  return explained(colon == std::string::npos ? line : line.substr(colon + 2));
 }
 
 /// Joins distinct messages with "; ", at most `max_count` of them.
@@ -105,7 +123,7 @@ void GmshSession::throw_gmsh_error(const std::string& context, std::size_t log_s
     }
   } catch (...) {  // the log is a courtesy; the thrown message still gets reported
   }
-  if (!thrown_message.empty()) messages.push_back(thrown_message);
+  if (!thrown_message.empty()) messages.push_back(explained(thrown_message));
   if (messages.empty()) messages.push_back("Gmsh failed without a message");
   throw InputError(context + ": " + join_distinct(messages, 4));
 }

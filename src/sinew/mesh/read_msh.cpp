@@ -2,32 +2,18 @@
 
 #include <gmsh.h>
 
-#include <filesystem>
-#include <fstream>
-#include <system_error>
+#include <new>
+#include <stdexcept>
 
 #include "sinew/core/error.hpp"
 #include "sinew/mesh/gmsh_model.hpp"
 #include "sinew/mesh/gmsh_session.hpp"
+#include "sinew/mesh/msh_format_check.hpp"
+#include "sinew/mesh/private_file_copy.hpp"
 
 namespace sinew::mesh {
 
 namespace {
-
-/// Gmsh silently ignores files it cannot open, so check first.
-void check_readable(const std::string& path) {
-  std::error_code error;
-  const auto status = std::filesystem::status(path, error);
-  if (error || !std::filesystem::exists(status)) {
-    throw InputError("mesh file \"" + path + "\" does not exist");
-  }
-  if (!std::filesystem::is_regular_file(status)) {
-    throw InputError("mesh file \"" + path + "\" is not a regular file");
-  }
-  if (!std::ifstream(path, std::ios::binary).good()) {
-    throw InputError("mesh file \"" + path + "\" cannot be opened for reading");
-  }
-}
 
 std::string join(const std::vector<std::string>& names) {
   std::string joined;
@@ -35,15 +21,37 @@ std::string join(const std::vector<std::string>& names) {
   return joined;
 }
 
+std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
 }  // namespace
 
 TetMesh read_msh(const std::string& path) {
-  check_readable(path);
+  // Only a genuine MSH file reaches Gmsh, which would run anything else as a script; and Gmsh
+  // reads a private copy, the very bytes checked, with no "<name>.opt" script beside it (Gmsh
+  // runs one when it exists). See docs/input-safety.md.
+  check_msh_path(path);
+  const PrivateFileCopy copy(path, "mesh.msh", kMaxMshFileBytes);
+  check_msh_content(copy.path(), path);
   const std::string context = "mesh file \"" + path + "\"";
   TetMesh mesh;
-  {
+  try {
     GmshSession gmsh_session;
-    gmsh_session.run(context, [&] { gmsh::open(path); });
+    gmsh_session.run(context, [&] {
+      try {
+        gmsh::open(copy.path());
+      } catch (const std::bad_alloc&) {
+        throw InputError(context + " is malformed or truncated (a count in it is larger than the "
+                                   "file; Gmsh ran out of memory reading it): re-export it from Gmsh");
+      } catch (const std::length_error&) {
+        throw InputError(context + " is malformed or truncated (a count in it is larger than the "
+                                   "file): re-export it from Gmsh");
+      }
+    });
     mesh = gmsh_session.run(context, [&] {
       const auto other_volume_elements = gmsh_element_type_names(3, {kGmshLinearTetrahedron});
       if (!other_volume_elements.empty()) {
@@ -66,6 +74,9 @@ TetMesh read_msh(const std::string& path) {
       }
       return model_mesh;
     });
+  } catch (const InputError& error) {
+    // Gmsh's messages name the copy it read.
+    throw InputError(replace_all(error.what(), copy.path(), path));
   }
   validate(mesh, path);
   return mesh;
