@@ -93,6 +93,25 @@ TEST(BuildContact, PairsOverrideTheGlobalPenaltyAndCanSwitchContactOff) {
   EXPECT_EQ(setup.geometry.penalty(0, 1), 0.0);
 }
 
+// A penalty 1e15 ran the Hertz ball past 300 s in tiny steps: penalties far above the automatic
+// one are refused with the ratio, the automatic value and what to do.
+TEST(BuildContact, APenaltyFarAboveTheAutomaticOneIsRefused) {
+  json scene = contact_scene();
+  const ContactSetup automatic = build(scene);
+  const double allowed = automatic.geometry.penalty(0, 1) * kMaxPenaltyOverAutomatic;
+  scene["contact"] = {{"penalty", 0.5 * allowed}};
+  EXPECT_EQ(build_contact_error(scene), "no error");
+  scene["contact"] = {{"penalty", 2 * allowed}};
+  const std::string error = build_contact_error(scene);
+  EXPECT_NE(error.find("the penalty between \"box\" and \"plate\""), std::string::npos) << error;
+  EXPECT_NE(error.find("times the automatic penalty 10 E / h"), std::string::npos) << error;
+  EXPECT_NE(error.find("lower it"), std::string::npos) << error;
+  // A region scale counts: the pair's penalty times the largest contact_penalty_scale.
+  scene["contact"] = {{"penalty", 0.5 * allowed}};
+  scene["bodies"][0]["regions"]["gel"]["contact_penalty_scale"] = 4;
+  EXPECT_NE(build_contact_error(scene).find("with contact_penalty_scale 4"), std::string::npos);
+}
+
 TEST(BuildContact, RegionPenaltyScalesReachTheirTetsAndSurfaceTriangles) {
   // Without a scale anywhere the arrays stay empty (every factor 1).
   const ContactSetup plain = build(contact_scene());

@@ -22,12 +22,16 @@ struct ContactSetup {
   std::vector<double> body_edge_length;    ///< mean boundary edge length per body (length)
 };
 
+/// A pair's penalty (times the largest contact_penalty_scale) may be at most this many times
+/// the automatic penalty 10 E / h of the pair: stiffer contact leaves Newton crawling.
+inline constexpr double kMaxPenaltyOverAutomatic = 1e5;
+
 /// Requires scene.contact.enabled. Throws InputError, each message naming the config path, for:
 /// a depth face set or region the body does not have, a depth file that cannot be read, has
 /// the wrong count of numbers or a negative/non-finite value, a depth field the mesh file does
 /// not have (the fields it has are listed) or cannot use (not scalar, not at every node), or with
 /// a negative/non-finite value (the first such node is named), and a pair of all-rigid bodies
-/// without an explicit penalty.
+/// without an explicit penalty, and a penalty above kMaxPenaltyOverAutomatic times the automatic one.
 ContactSetup build_contact(const SceneConfig& scene, const fem::Problem& problem);
 
 /// Nodal depths from a text file: whitespace-separated numbers, `expected` of them, each
