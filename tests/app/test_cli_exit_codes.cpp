@@ -6,7 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <regex>
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -16,6 +16,16 @@ namespace sinew::app_test {
 namespace {
 
 using ::testing::HasSubstr;
+
+/// The longest run of decimal digits in `text`.
+std::size_t longest_digit_run(const std::string& text) {
+  std::size_t longest = 0, run = 0;
+  for (const char c : text) {
+    run = (c >= '0' && c <= '9') ? run + 1 : 0;
+    longest = std::max(longest, run);
+  }
+  return longest;
+}
 
 struct Mistake {
   std::vector<std::string> arguments;  ///< "SCENE" stands for a valid scene file
@@ -60,7 +70,7 @@ TEST(ExitCodes, EveryCommandLineMistakeExitsOneAndNamesIt) {
     EXPECT_EQ(result.exit_code, 1) << shown << "\n" << result.err;
     EXPECT_THAT(result.out + result.err, HasSubstr(mistake.named)) << shown;
     // Range messages print numbers as written, not as 309 digits.
-    EXPECT_FALSE(std::regex_search(result.out + result.err, std::regex("[0-9]{40}"))) << shown << "\n" << result.err;
+    EXPECT_LT(longest_digit_run(result.out + result.err), 40u) << shown << "\n" << result.err;
   }
   EXPECT_FALSE(fs::exists(directory / "out"));
 }
