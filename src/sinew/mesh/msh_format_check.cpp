@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sinew/core/error.hpp"
+#include "sinew/mesh/msh_cursor.hpp"
 
 namespace sinew::mesh {
 
@@ -38,94 +39,6 @@ int nodes_of_element_type(std::uint64_t type) {
                                           9, 10, 27, 18, 14, 1, 8, 20, 15, 13};
   return type < kNodes.size() ? kNodes[type] : 0;
 }
-
-/// Reads an MSH file as lines, whitespace-separated tokens or raw binary values, reporting
-/// every problem as an InputError that names the file.
-class MshCursor {
- public:
-  /// Reads `path`, `size` bytes long; messages name `shown_path`.
-  MshCursor(const std::string& path, std::uintmax_t size, const std::string& shown_path)
-      : in_(path, std::ios::binary), size_(size), context_("mesh file \"" + shown_path + "\"") {
-    if (!in_) fail(" cannot be opened for reading");
-  }
-
-  [[noreturn]] void fail(const std::string& problem) const { throw InputError(context_ + problem); }
-
-  /// The next line without its end-of-line characters; false at the end of the file.
-  bool next_line(std::string& line) {
-    if (!std::getline(in_, line)) return false;
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) {
-      line.pop_back();
-    }
-    return true;
-  }
-
-  /// Skips the rest of the current line.
-  void skip_line() {
-    std::string rest;
-    std::getline(in_, rest);
-  }
-
-  std::uintmax_t remaining() {
-    const auto position = in_.tellg();
-    if (position < 0) return 0;
-    const auto used = static_cast<std::uintmax_t>(position);
-    return used < size_ ? size_ - used : 0;
-  }
-
-  /// An ASCII count (a non-negative integer) of `section`.
-  std::uint64_t ascii_count(const std::string& section) {
-    std::string token;
-    if (!(in_ >> token)) truncated(section);
-    std::uint64_t value = 0;
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (error != std::errc() || end != token.data() + token.size()) {
-      fail(" is malformed: its $" + section + " section holds \"" + token.substr(0, 40) +
-           "\" where a count (a non-negative integer) belongs");
-    }
-    return value;
-  }
-
-  void skip_tokens(std::uint64_t count, const std::string& section) {
-    std::string token;
-    for (std::uint64_t i = 0; i < count; ++i) {
-      if (!(in_ >> token)) truncated(section);
-    }
-  }
-
-  template <class T>
-  T binary(const std::string& section) {
-    T value{};
-    if (!in_.read(reinterpret_cast<char*>(&value), sizeof(T))) truncated(section);
-    return value;
-  }
-
-  void skip_bytes(std::uint64_t count, const std::string& section) {
-    if (count > remaining()) truncated(section);
-    in_.seekg(static_cast<std::streamoff>(count), std::ios::cur);
-  }
-
-  /// Throws unless `count` items of at least `bytes_each` bytes fit in the rest of the file.
-  void check_fits(std::uint64_t count, std::uint64_t bytes_each, const std::string& what,
-                  const std::string& section) {
-    const std::uintmax_t left = remaining();
-    if (count > left / bytes_each) {
-      fail(" is malformed or truncated: its $" + section + " section announces " +
-           std::to_string(count) + " " + what + ", more than the " + std::to_string(left) +
-           " bytes that follow can hold (a count in its header is larger than the file)");
-    }
-  }
-
-  [[noreturn]] void truncated(const std::string& section) const {
-    fail(" is truncated or malformed: it ends inside its $" + section +
-         " section, before the data its header announces (re-export it from Gmsh)");
-  }
-
- private:
-  std::ifstream in_;
-  std::uintmax_t size_;
-  std::string context_;
-};
 
 MshFileFormat read_format(MshCursor& cursor) {
   const std::string not_msh =
@@ -165,24 +78,32 @@ MshFileFormat read_format(MshCursor& cursor) {
   return format;
 }
 
+/// The first line of a version 4 $Nodes or $Elements section: the number of entity blocks and
+/// of items (4.1 adds the smallest and largest tag, skipped here).
+struct V4SectionHeader {
+  std::uint64_t blocks = 0;
+  std::uint64_t items = 0;
+};
+
+V4SectionHeader read_v4_header(MshCursor& cursor, bool binary, bool v40, const std::string& section) {
+  V4SectionHeader header;
+  header.blocks = cursor.v4_count(binary, section);
+  header.items = cursor.v4_count(binary, section);
+  if (!v40) {
+    cursor.v4_count(binary, section);  // min tag
+    cursor.v4_count(binary, section);  // max tag
+  }
+  return header;
+}
+
 /// Walks a version 4.0 (ASCII) or 4.1 $Nodes section up to its last coordinate, checking every
 /// count; appends the node tags to `tags`. Version 4.1 gives each entity block's tags, then
 /// its coordinates; 4.0 a tag before each node's coordinates, and fewer header fields.
 void walk_nodes_v4(MshCursor& cursor, bool binary, bool v40, std::vector<std::uint64_t>& tags) {
   const std::string section = "Nodes";
-  const auto count = [&] {
-    return binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
-  };
-  const auto small = [&] {
-    return binary ? static_cast<std::uint64_t>(cursor.binary<std::int32_t>(section))
-                  : cursor.ascii_count(section);
-  };
-  const std::uint64_t num_blocks = count();
-  const std::uint64_t num_nodes = count();
-  if (!v40) {
-    count();  // min tag
-    count();  // max tag
-  }
+  const auto count = [&] { return cursor.v4_count(binary, section); };
+  const auto small = [&] { return cursor.v4_small(binary, section); };
+  const auto [num_blocks, num_nodes] = read_v4_header(cursor, binary, v40, section);
   cursor.check_fits(num_blocks, binary ? 20 : 8, "entity blocks", section);
   cursor.check_fits(num_nodes, binary ? 32 : 8, "nodes", section);
   for (std::uint64_t b = 0; b < num_blocks; ++b) {
@@ -283,19 +204,9 @@ int checked_nodes_of_element_type(MshCursor& cursor, std::uint64_t type) {
 void walk_elements_v4(MshCursor& cursor, bool binary, bool v40, const NodeTags& nodes,
                       std::vector<std::uint64_t>& element_tags) {
   const std::string section = "Elements";
-  const auto count = [&] {
-    return binary ? cursor.binary<std::uint64_t>(section) : cursor.ascii_count(section);
-  };
-  const auto small = [&] {
-    return binary ? static_cast<std::uint64_t>(cursor.binary<std::int32_t>(section))
-                  : cursor.ascii_count(section);
-  };
-  const std::uint64_t num_blocks = count();
-  const std::uint64_t num_elements = count();
-  if (!v40) {
-    count();  // min tag
-    count();  // max tag
-  }
+  const auto count = [&] { return cursor.v4_count(binary, section); };
+  const auto small = [&] { return cursor.v4_small(binary, section); };
+  const auto [num_blocks, num_elements] = read_v4_header(cursor, binary, v40, section);
   cursor.check_fits(num_blocks, binary ? 20 : 8, "entity blocks", section);
   cursor.check_fits(num_elements, binary ? 16 : 4, "elements", section);
   for (std::uint64_t b = 0; b < num_blocks; ++b) {
