@@ -7,8 +7,8 @@
 ///
 /// CI runs a short, fixed-seed set; scripts/fuzz-soak.sh runs a long one. Environment:
 ///   SINEW_FUZZ_SEED        seed (default 18)
-///   SINEW_FUZZ_VALIDATE    number of validate cases (default 120; 30 under the sanitizers)
-///   SINEW_FUZZ_RUN         number of run cases (default 16; 4 under the sanitizers)
+///   SINEW_FUZZ_VALIDATE    number of validate cases (default 120; 60 under the sanitizers)
+///   SINEW_FUZZ_RUN         number of run cases (default 16; 6 under the sanitizers)
 ///   SINEW_FUZZ_BINARY      the sinew to test (default: this build's)
 ///   SINEW_FUZZ_KEEP        a directory to keep every failing case in
 
@@ -27,8 +27,8 @@ namespace sinew::app_test {
 namespace {
 
 #if defined(__SANITIZE_ADDRESS__)
-constexpr int kDefaultValidateCases = 30;
-constexpr int kDefaultRunCases = 4;
+constexpr int kDefaultValidateCases = 60;
+constexpr int kDefaultRunCases = 6;
 constexpr int kCaseSeconds = 120;
 #else
 constexpr int kDefaultValidateCases = 120;
