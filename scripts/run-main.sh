@@ -22,7 +22,8 @@ bash scripts/install-deps.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DSINEW_BUILD_TESTS=OFF -DSINEW_BUILD_BENCH=OFF
 cmake --build build -j "$(nproc)" --target sinew
 NAME="$(basename "$SCENE" .json)"
-./build/sinew run "$SCENE" -o "out/$NAME" "${SIZE[@]}"
+# --overwrite: each run of the main job replaces the previous one's results in out/NAME.
+./build/sinew run "$SCENE" -o "out/$NAME" --overwrite "${SIZE[@]}"
 if [ "$NAME" = knee-flexion ]; then
   /usr/bin/python3 scripts/render_knee.py "out/$NAME"
 fi
