@@ -60,7 +60,6 @@ class DofMap {
 
   /// Builds the q-space pattern for H's pattern (call when H.pattern_version() changes).
   void bind_pattern(const BlockSparseMatrix& H);
-  std::uint64_t bound_pattern_version() const { return bound_version_; }
   /// K = J^T H J + (rotation second-order terms from g) + diag(viscosity) in q-space; K keeps
   /// the same sparsity pattern between calls (values overwritten). `viscosity`: per node (#V),
   /// or empty.

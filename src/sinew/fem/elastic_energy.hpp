@@ -35,7 +35,6 @@ class ElasticEnergy final : public Energy {
 
   const std::vector<Index>& deformable_tets() const { return active_; }
   const std::vector<TetRestShape>& rest_shapes() const { return rest_; }
-  void set_options(const ElasticEnergyOptions& options) { options_ = options; }
 
  private:
   const Tets& tets_;

@@ -36,7 +36,6 @@ class Objective {
   /// Wall-clock seconds spent so far in the terms' update() and begin_step() (collision
   /// detection), accumulated over the objective's life.
   double collision_seconds() const { return collision_seconds_; }
-  const std::vector<Energy*>& terms() const { return terms_; }
 
  private:
   void rebuild_pattern();
