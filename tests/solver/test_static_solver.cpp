@@ -8,56 +8,14 @@
 #include "sinew/fem/reactions.hpp"
 #include "sinew/solver/static_solver.hpp"
 #include "support/problem_builder.hpp"
+#include "support/solver_rig.hpp"
 
 using namespace sinew;
 namespace st = sinew::testing;
 
-namespace {
-
-/// Closed form of uniaxial tension for the seed's Mooney-Rivlin law, F = diag(l, s, s):
-/// the lateral stretch s zeroes the lateral nominal stress; returns (s, axial nominal stress).
-std::pair<double, double> mooney_rivlin_uniaxial(double C1, double C2, double a, double l) {
-  const double c = C1 + 2 * C2 + a;
-  auto lateral = [&](double s) { return 2 * C1 * s + 2 * C2 * s * (l * l + s * s) + 2 * a * s * s * s * l * l - 2 * c / s; };
-  double lo = 1e-3, hi = 10;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (lateral(mid) > 0 ? hi : lo) = mid;
-  }
-  const double s = 0.5 * (lo + hi);
-  const double axial = 2 * C1 * l + 4 * C2 * l * s * s + 2 * a * l * s * s * s * s - 2 * c / l;
-  return {s, axial};
-}
-
-struct SolverRig {
-  fem::Problem problem;
-  std::unique_ptr<fem::DofMap> dofs;
-  std::unique_ptr<fem::ElasticEnergy> elastic;
-  std::unique_ptr<fem::ExternalForceEnergy> external;
-  std::unique_ptr<solver::Objective> objective;
-
-  explicit SolverRig(fem::Problem p, fem::ElasticEnergyOptions options = {}) : problem(std::move(p)) {
-    dofs = std::make_unique<fem::DofMap>(problem);
-    elastic = std::make_unique<fem::ElasticEnergy>(problem.mesh.rest, problem.mesh.tets, st::tet_materials(problem),
-                                                   options);
-    external = std::make_unique<fem::ExternalForceEnergy>(
-        fem::lumped_masses(problem.mesh.rest, problem.mesh.tets, problem.mesh.region, problem.region_density),
-        problem.gravity, fem::Amplitude{}, problem.forces, problem.mesh.num_nodes());
-    objective = std::make_unique<solver::Objective>(*dofs, std::vector<Energy*>{elastic.get(), external.get()},
-                                                    problem.mesh.num_nodes());
-  }
-};
-
-fem::Problem uniaxial_problem(double stretch, double C1, double C2, double a) {
-  auto p = st::box_problem(3, 2, 2, Vector3(0, 0, 0), Vector3(1, 1, 1), st::mooney_rivlin(C1, C2, a));
-  p.planar.push_back({"x0", st::nodes_on_plane(p.mesh, 0, 0.0), Vector3::UnitX(), 0.0, {}});
-  p.planar.push_back({"y0", st::nodes_on_plane(p.mesh, 1, 0.0), Vector3::UnitY(), 0.0, {}});
-  p.planar.push_back({"z0", st::nodes_on_plane(p.mesh, 2, 0.0), Vector3::UnitZ(), 0.0, {}});
-  p.planar.push_back({"pull", st::nodes_on_plane(p.mesh, 0, 1.0), Vector3::UnitX(), stretch - 1.0, {}});
-  return p;
-}
-
-}  // namespace
+using st::mooney_rivlin_uniaxial;
+using st::SolverRig;
+using st::uniaxial_problem;
 
 TEST(StaticSolver, UniaxialMooneyRivlinMatchesClosedForm) {
   const double C1 = 0.5, C2 = 0.2, a = 1.5, stretch = 1.6;
