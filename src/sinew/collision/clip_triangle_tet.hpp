@@ -1,7 +1,7 @@
 #pragma once
 /// @file clip_triangle_tet.hpp
 /// The intersection of a triangle with a tetrahedron (the integration domain of the contact
-/// energy, GUIDE.md section 1): the triangle clipped by the four face half-spaces of the tet
+/// energy, docs/theory.md): the triangle clipped by the four face half-spaces of the tet
 /// (Sutherland-Hodgman on the triangle's plane). Every polygon vertex carries its provenance
 /// (a triangle vertex, a triangle edge crossing a tet face plane, or a tet edge crossing the
 /// triangle's plane), from which the exact derivatives of the contact energy are built, and its

@@ -1,6 +1,6 @@
 #pragma once
 /// @file material_depth.hpp
-/// Material depth (GUIDE.md section 1, dissertation section 5.4.1): for a node of a body, the
+/// Material depth (docs/theory.md, dissertation section 5.4.1): for a node of a body, the
 /// distance in the rest configuration from the node to that body's contact surface (0 on the
 /// surface). Exact point-triangle distances; the default search goes through a bounding-volume
 /// hierarchy over the surface triangles, the exhaustive search of the seed is kept as the

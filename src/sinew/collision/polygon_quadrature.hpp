@@ -1,7 +1,7 @@
 #pragma once
 /// @file polygon_quadrature.hpp
 /// Exact integral of the square of a linear field over a planar convex polygon (the contact
-/// energy integrand g^2 over triangle ∩ tet, GUIDE.md section 1, dissertation eqs. 5.49-5.54):
+/// energy integrand g^2 over triangle ∩ tet, docs/theory.md, dissertation eqs. 5.49-5.54):
 /// a triangle fan from vertex 0 with the degree-2 exact rule on each fan triangle,
 ///   ∫_T g² da = A/6 (g_a² + g_b² + g_c² + g_a g_b + g_b g_c + g_c g_a).
 /// No heap.

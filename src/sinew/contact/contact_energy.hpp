@@ -1,6 +1,7 @@
 #pragma once
 /// @file contact_energy.hpp
-/// The material-depth contact energy of GUIDE.md section 1 as one term of the total potential:
+/// The material-depth contact energy (docs/theory.md, dissertation chapter 5) as one term of
+/// the total potential:
 ///   Ec(x) = Σ over pairs (t, e) (ε_te / 2) ∫_{t ∩ e} g_e(y)² da(y)      (area method), or
 ///   Ec(x) = Σ over pairs (t, e) (ε_te / 2) Σ_{v of t in e} (A_t/3) g_e(x_v)²  (point method),
 /// t a contact-surface triangle and e a tetrahedron of any body, the same body included

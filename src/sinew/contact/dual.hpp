@@ -3,7 +3,7 @@
 /// Forward-mode automatic differentiation with a fixed number N of independent variables:
 /// Dual<N> carries a value and its gradient (Hessians: tape.hpp). Only the operations the
 /// contact integrals need (+, -, *, /, sqrt). Used to differentiate the per-pair contact integral
-/// exactly through the moving polygon vertices (GUIDE.md section 1); no heap allocation.
+/// exactly through the moving polygon vertices (docs/theory.md); no heap allocation.
 
 #include <cmath>
 

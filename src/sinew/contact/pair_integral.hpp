@@ -1,7 +1,7 @@
 #pragma once
 /// @file pair_integral.hpp
 /// The contact integral of one (boundary triangle, tetrahedron) pair and its exact derivatives
-/// (GUIDE.md section 1):
+/// (docs/theory.md):
 ///   area method:  I = ∫_{t ∩ e} g_e(y)² da(y), integrated exactly over the clip polygon,
 ///   point method: I = Σ over triangle vertices v inside e of (A_t / 3) g_e(x_v)²,
 /// with g_e the linear interpolation of the nodal material depths over the tet, all in the

@@ -1,6 +1,6 @@
 #pragma once
 /// @file psd_projection.hpp
-/// Projection of a symmetric matrix onto the positive semi-definite cone (GUIDE.md section 1:
+/// Projection of a symmetric matrix onto the positive semi-definite cone (docs/theory.md;
 /// the modern answer to indefinite element Hessians, as in IPC/PolyFEM).
 ///
 /// For A = Q diag(lambda) Q^T the projection is Q diag(max(lambda, 0)) Q^T, the nearest PSD

@@ -1,6 +1,6 @@
 #pragma once
 /// @file composite.hpp
-/// A base law plus the fiber term: psi = psi_base(F) + psi_f(F) (GUIDE.md section 1).
+/// A base law plus the fiber term: psi = psi_base(F) + psi_f(F) (docs/theory.md).
 
 #include <string>
 

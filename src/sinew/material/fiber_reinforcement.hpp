@@ -1,6 +1,6 @@
 #pragma once
 /// @file fiber_reinforcement.hpp
-/// Fiber term added to a base law (GUIDE.md section 1):
+/// Fiber term added to a base law (docs/theory.md):
 ///   psi_f = alpha exp(beta (x - 1)) - alpha beta x - alpha (1 - beta),   x = lambda^2 = d . C d,
 /// d the unit rest fiber direction. psi_f(I) = 0 and dpsi_f/dx(1) = 0, so the term is
 /// stress-free at rest; d2psi_f/dx2 = alpha beta^2 exp(beta (x - 1)) > 0 (convex in x).

@@ -1,7 +1,7 @@
 #pragma once
 /// @file invariants.hpp
 /// Invariants of the right Cauchy-Green tensor C = F^T F and their first and second
-/// derivatives with respect to F, in closed form (GUIDE.md section 1):
+/// derivatives with respect to F, in closed form (docs/theory.md):
 ///   I1 = tr C,  I2 = 1/2 (I1^2 - tr C^2),  I3 = det C = J^2,  J = det F.
 /// Derivatives use the vec convention of material.hpp: vec(A)[i + 3 j] = A(i, j), so a
 /// gradient is a 9-vector and a Hessian a symmetric 9x9 matrix. All quantities are

@@ -1,6 +1,6 @@
 #pragma once
 /// @file material_spec.hpp
-/// Plain parameter structs for every law (GUIDE.md section 1) and the factory that turns
+/// Plain parameter structs for every law (docs/theory.md) and the factory that turns
 /// them into a Material. Units: stresses in the scene's stress unit; beta dimensionless.
 
 #include <optional>

@@ -1,6 +1,6 @@
 #pragma once
 /// @file mooney_rivlin.hpp
-/// Compressible Mooney-Rivlin law in the paper's form (GUIDE.md section 1):
+/// Compressible Mooney-Rivlin law in the paper's form (docs/theory.md):
 ///   psi = C1 (I1 - 3) + C2 (I2 - 3) + a (I3 - 1) - (C1 + 2 C2 + a) ln I3,
 /// with I2 = 1/2 (I1^2 - tr C^2) (not tr C^2 as in the dissertation).
 /// Written here in J = det F: a (J^2 - 1) - 2 (C1 + 2 C2 + a) ln J.

@@ -1,6 +1,6 @@
 #pragma once
 /// @file neo_hookean.hpp
-/// Compressible neo-Hookean law (for cross-checks with other solvers, GUIDE.md section 1):
+/// Compressible neo-Hookean law (for cross-checks with other solvers, docs/theory.md):
 ///   psi = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2.
 
 #include "sinew/material/invariants.hpp"

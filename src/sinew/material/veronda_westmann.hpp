@@ -1,6 +1,6 @@
 #pragma once
 /// @file veronda_westmann.hpp
-/// Veronda-Westmann law in the consistent, stress-free form of GUIDE.md section 1:
+/// Veronda-Westmann law in a consistent, stress-free form (docs/theory.md):
 ///   psi = alpha (exp(beta (I1 - 3)) - 1) - (alpha beta / 2)(I2 - 3) + a (I3 - 1) - a ln I3.
 /// (The paper's 2 alpha exp(I1 - 3) + alpha beta (I2 - 3) + ... is not stress-free at rest.)
 /// Written here in J = det F: a (J^2 - 1) - 2 a ln J.

@@ -103,7 +103,7 @@ struct ContactPairConfig {
   bool enabled = true;
 };
 
-/// Material-depth contact between all bodies (GUIDE.md section 1).
+/// Material-depth contact between all bodies (docs/theory.md).
 struct ContactConfig {
   bool enabled = false;  ///< true when the scene has a "contact" section
   contact::ContactMethod method = contact::ContactMethod::Area;

@@ -203,7 +203,7 @@ SchemaNode shape_definition() {
 SchemaNode material_schema() {
   const material::MooneyRivlinParams mooney_rivlin;
   const material::FiberParams fiber;
-  Key m = object("", "A hyperelastic law (GUIDE.md section 1); stresses in the scene's stress unit",
+  Key m = object("", "A hyperelastic law (docs/theory.md); stresses in the scene's stress unit",
                  {
                      string("law", "the strain-energy function")
                          .required()
@@ -364,7 +364,7 @@ SchemaNode contact_schema() {
   const ContactConfig defaults;
   return object(
       "contact",
-      "material-depth contact between all bodies, self-contact included (GUIDE.md section 1): the energy "
+      "material-depth contact between all bodies, self-contact included (docs/theory.md): the energy "
       "(penalty/2) * integral of depth^2 over every boundary-triangle / tet intersection. Omit for no contact.",
       {
           string("method", "\"area\": exact integral over triangle-tet intersections (continuous forces); "
