@@ -12,12 +12,11 @@
 #include "convergence_study.hpp"
 #include "exit_codes.hpp"
 #include "run_scene.hpp"
-#include "static_model.hpp"
-#include "sinew/scene/build_problem.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/core/log.hpp"
 #include "sinew/io/atomic_file.hpp"
 #include "sinew/io/output_directory.hpp"
+#include "sinew/model/model.hpp"
 #include "sinew/scene/load_scene.hpp"
 #include "sinew/scene/scene_schema.hpp"
 
@@ -207,14 +206,13 @@ int run_commands(int argc, char** argv) {
     }
     if (*validate) {
       const auto config = with_overrides(scene::load_scene_file(validate_path), overrides);
-      const fem::Problem problem = scene::build_problem(config);
-      // The same model a run builds: contact (depths, penalties) and dynamics (masses, time
-      // steps) are checked too.
-      const std::optional<ContactInput> contact = make_contact_input(config, problem);
-      const auto model = make_static_model(problem, config.solver, contact ? &*contact : nullptr, &config.dynamics);
+      // Exactly the model a run builds: meshes, constraints, contact (depths, penalties) and
+      // dynamics (masses, time steps) are checked.
+      const model::Model model = model::build_model(config);
+      const fem::Problem& problem = *model.problem;
       std::string extras;
       if (model.contact) extras += fmt::format(", contact between {} bodies", model.contact->num_bodies());
-      if (model.mass) extras += ", dynamics";
+      if (model.is_dynamic()) extras += ", dynamics";
       std::cout << fmt::format("{}: valid ({} bodies, {} nodes, {} tets, {} unknowns{})\n", validate_path,
                                config.bodies.size(), problem.mesh.num_nodes(), problem.mesh.num_tets(),
                                model.dofs->num_dofs(), extras);

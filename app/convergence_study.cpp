@@ -13,8 +13,7 @@
 #include "sinew/core/log.hpp"
 #include "sinew/io/atomic_file.hpp"
 #include "sinew/io/csv.hpp"
-#include "sinew/scene/build_contact.hpp"
-#include "sinew/scene/build_problem.hpp"
+#include "sinew/model/model.hpp"
 
 namespace sinew::app {
 
@@ -22,26 +21,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The scene with every contact penalty set to `penalty` (pair penalties included; pairs stay
-/// enabled or disabled as the scene says) and the given method; penalty 0 removes contact.
-scene::SceneConfig with_contact(scene::SceneConfig scene, contact::ContactMethod method, double penalty) {
-  if (penalty == 0) {
-    scene.contact.enabled = false;
-    return scene;
-  }
-  scene.contact.method = method;
-  scene.contact.penalty = penalty;
-  for (auto& pair : scene.contact.pairs)
-    if (pair.penalty) pair.penalty = penalty;
-  return scene;
-}
-
-/// Contact energy of the scene's geometry for measuring: area method, unit penalty on every
+/// Contact energy of the model's geometry for measuring: area method, unit penalty on every
 /// pair the scene has contact on (the penetration figures do not depend on the penalty).
-contact::ContactEnergy measuring_contact(const scene::SceneConfig& scene, const fem::Problem& problem) {
-  scene::SceneConfig unit = with_contact(scene, contact::ContactMethod::Area, 1.0);
-  scene::ContactSetup setup = scene::build_contact(unit, problem);
-  return contact::ContactEnergy(std::move(setup.geometry), contact::ContactOptions{});
+contact::ContactEnergy measuring_contact(const model::Model& model) {
+  return contact::ContactEnergy(model::geometry_with_penalty(*model.contact_setup, 1.0), contact::ContactOptions{});
 }
 
 /// Lowers the log level to warnings for its lifetime and restores it, also when a run throws.
@@ -58,13 +41,16 @@ class QuietLog {
 
 std::string penalty_label(double penalty) { return fmt::format("{:g}", penalty); }
 
-void check_options(const scene::SceneConfig& scene, const fem::Problem& problem, const ConvergenceStudyOptions& o) {
+void check_options(const scene::SceneConfig& scene, const model::Model& model, const ConvergenceStudyOptions& o) {
+  const fem::Problem& problem = *model.problem;
   if (!scene.contact.enabled)
     throw InputError(fmt::format("study convergence: scene \"{}\" has no contact section", scene.name));
   if (o.penalties.empty()) throw InputError("study convergence: no penalties given");
   for (double p : o.penalties)
     if (!(p >= 0) || !std::isfinite(p))
       throw InputError(fmt::format("study convergence: penalty {} must be finite and >= 0", p));
+    else if (p > 0)
+      model::geometry_with_penalty(*model.contact_setup, p);  // throws for a penalty too stiff for Newton
   if (o.methods.empty()) throw InputError("study convergence: no contact methods given");
   if (!(o.tolerance > 0 && o.tolerance < 1))
     throw InputError(fmt::format("study convergence: tolerance {} must be in (0, 1)", o.tolerance));
@@ -91,8 +77,8 @@ void check_options(const scene::SceneConfig& scene, const fem::Problem& problem,
 }
 
 /// Contact forces on the sweep body's nodes at each position of its rigid translation.
-void write_force_sweep(const scene::SceneConfig& scene, const fem::Problem& problem,
-                       const ConvergenceStudyOptions& o) {
+void write_force_sweep(const model::Model& model, const ConvergenceStudyOptions& o) {
+  const fem::Problem& problem = *model.problem;
   const auto body = std::find_if(problem.bodies.begin(), problem.bodies.end(),
                                  [&](const fem::BodyRange& b) { return b.name == o.sweep_body; });
   io::CsvTable forces(o.output_directory + "/sweep_forces.csv",
@@ -101,9 +87,9 @@ void write_force_sweep(const scene::SceneConfig& scene, const fem::Problem& prob
                       {"method", "position", "offset", "fx", "fy", "fz", "energy"});
   const double length = o.sweep_translation.norm();
   for (const auto method : o.methods) {
-    scene::SceneConfig swept = with_contact(scene, method, o.sweep_penalty);
-    scene::ContactSetup setup = scene::build_contact(swept, problem);
-    contact::ContactEnergy energy(std::move(setup.geometry), setup.options);
+    contact::ContactOptions options = model.contact_setup->options;
+    options.method = method;
+    contact::ContactEnergy energy(model::geometry_with_penalty(*model.contact_setup, o.sweep_penalty), options);
     for (int k = 0; k < o.sweep_positions; ++k) {
       const double s = static_cast<double>(k) / (o.sweep_positions - 1);
       Positions x = problem.mesh.rest;
@@ -144,9 +130,12 @@ std::string contact_method_name(contact::ContactMethod method) {
 
 ConvergenceStudyReport run_convergence_study(const scene::SceneConfig& scene, const ConvergenceStudyOptions& o) {
   // Everything that can fail on bad input happens before the first file is written.
-  const fem::Problem problem = scene::build_problem(scene);
-  check_options(scene, problem, o);
-  contact::ContactEnergy measure = measuring_contact(scene, problem);
+  if (!scene.contact.enabled)
+    throw InputError(fmt::format("study convergence: scene \"{}\" has no contact section", scene.name));
+  model::Model model = model::build_model(scene);  // meshes and material depth, once for every run
+  check_options(scene, model, o);
+  if (o.end_time > 0) model.dynamics->options.end_time = o.end_time;
+  contact::ContactEnergy measure = measuring_contact(model);
   const io::OutputDirectoryLock lock(o.output_directory, {.overwrite = o.overwrite}, o.command);
 
   ConvergenceStudyReport report;
@@ -155,8 +144,7 @@ ConvergenceStudyReport run_convergence_study(const scene::SceneConfig& scene, co
                           "equilibrium_residual"});
   for (const auto method : o.methods) {
     for (const double penalty : o.penalties) {
-      scene::SceneConfig config = with_contact(scene, method, penalty);
-      if (o.end_time > 0) config.dynamics.options.end_time = o.end_time;
+      model::set_contact(model, {.method = method, .penalty = penalty});
       ConvergenceRun run;
       run.method = method;
       run.penalty = penalty;
@@ -179,17 +167,16 @@ ConvergenceStudyReport run_convergence_study(const scene::SceneConfig& scene, co
       RunReport result;
       {
         const QuietLog quiet;  // the study prints its own table
-        result = run_scene(config, options);
+        result = run_model(model, scene.output, options);  // the set-up is shared: not part of a run
       }
       residuals.flush();
       run.solved = result.success;
       run.message = result.message;
       run.wall_seconds = result.wall_seconds;
-      const bool dynamic = config.dynamics.enabled;
-      run.steps = dynamic ? result.dynamic_result.steps : result.result.steps;
-      run.newton_iterations = dynamic ? result.dynamic_result.newton_iterations : result.result.newton_iterations;
-      run.cuts = dynamic ? result.dynamic_result.cuts : result.result.cuts;
-      const fem::State& last = dynamic ? result.dynamic_result.last_state : result.result.last_converged;
+      run.steps = result.result.steps;
+      run.newton_iterations = result.result.newton_iterations;
+      run.cuts = result.result.cuts;
+      const fem::State& last = result.result.last_state;
       measure.begin_step(last.x);
       run.max_penetration = measure.statistics(last.x).max_penetration;
       // A run that never needed a Newton iteration started in equilibrium (within the solver's
@@ -216,7 +203,7 @@ ConvergenceStudyReport run_convergence_study(const scene::SceneConfig& scene, co
                  r.largest_residual, r.final_residual, r.max_penetration, r.wall_seconds, r.directory, r.message});
   runs.flush();
   io::write_file_atomically(o.output_directory + "/penetration.md", penetration_table_markdown(report, o.methods));
-  if (!o.sweep_body.empty()) write_force_sweep(scene, problem, o);
+  if (!o.sweep_body.empty()) write_force_sweep(model, o);
   return report;
 }
 

@@ -12,11 +12,11 @@
 
 namespace sinew::app {
 
-RunOutput::RunOutput(std::string directory, const fem::Problem& problem, const StaticModel& model,
-                     const scene::OutputConfig& config)
-    : directory_(std::move(directory)), problem_(problem), model_(model), config_(config) {
+RunOutput::RunOutput(std::string directory, const model::Model& model, const scene::OutputConfig& config)
+    : directory_(std::move(directory)), problem_(*model.problem), model_(model), config_(config) {
+  const fem::Problem& problem = problem_;
   std::vector<std::string> columns =
-      model.mass ? std::vector<std::string>{"step", "time", "step_size", "newton_iterations", "residual", "cuts",
+      model.is_dynamic() ? std::vector<std::string>{"step", "time", "step_size", "newton_iterations", "residual", "cuts",
                                             "kinetic_energy", "elastic_energy", "gravitational_energy",
                                             "contact_energy", "total_energy"}
                  : std::vector<std::string>{"step", "increment", "lambda", "step_size", "newton_iterations",
@@ -29,8 +29,8 @@ RunOutput::RunOutput(std::string directory, const fem::Problem& problem, const S
   if (model.contact) {
     for (const char* c : {"contact_pairs", "contact_area", "max_penetration", "mean_penetration"})
       columns.emplace_back(c);
-    if (!model.mass) columns.emplace_back("contact_energy");  // dynamics logs it with the other energies
-    const auto& names = model.contact_body_names;
+    if (!model.is_dynamic()) columns.emplace_back("contact_energy");  // dynamics logs it with the other energies
+    const auto& names = model.contact_body_names();
     const auto& penalty = model.contact->geometry().penalty;
     for (Index a = 0; a < penalty.rows(); ++a)
       for (Index b = a; b < penalty.cols(); ++b) {
@@ -53,7 +53,7 @@ RunOutput::RunOutput(std::string directory, const fem::Problem& problem, const S
   series_ = std::make_unique<io::PvdSeries>(directory_ + "/sinew.pvd");
   if (!problem.rigid_bodies.empty()) {
     std::vector<std::string> rigid_columns =
-        model.mass ? std::vector<std::string>{"step", "time"} : std::vector<std::string>{"step", "increment", "lambda"};
+        model.is_dynamic() ? std::vector<std::string>{"step", "time"} : std::vector<std::string>{"step", "increment", "lambda"};
     for (const auto& r : problem.rigid_bodies)
       for (const char* c : {"x", "y", "z", "rx", "ry", "rz", "angle_deg"}) rigid_columns.push_back(r.name + "." + c);
     rigid_ = std::make_unique<io::CsvTable>(directory_ + "/rigid_bodies.csv", rigid_columns);
@@ -84,11 +84,11 @@ std::optional<contact::ContactStatistics> RunOutput::contact_statistics(const fe
 
 void RunOutput::write_step(const solver::StepRecord& step, const fem::State& state) {
   const auto contact = contact_statistics(state);
-  write_row({static_cast<long long>(step.step), static_cast<long long>(step.increment), step.lambda, step.step_size,
+  write_row({static_cast<long long>(step.step), static_cast<long long>(step.segment), step.t, step.step_size,
              static_cast<long long>(step.newton_iterations), step.residual, step.force_scale, step.energy,
              static_cast<long long>(step.cuts)},
             state, contact ? &*contact : nullptr);
-  write_rigid_row({static_cast<long long>(step.step), static_cast<long long>(step.increment), step.lambda}, state,
+  write_rigid_row({static_cast<long long>(step.step), static_cast<long long>(step.segment), step.t}, state,
                   true);
 }
 
@@ -96,29 +96,22 @@ DynamicEnergies RunOutput::energies(const fem::State& state, const NodalVectors&
                                     const contact::ContactStatistics* contact) const {
   DynamicEnergies e;
   const VectorX v = velocity.reshaped<Eigen::RowMajor>();  // node-major x, y, z
-  e.kinetic = 0.5 * v.dot(model_.mass->multiply(v));
+  e.kinetic = 0.5 * v.dot(model_.dynamics->mass->multiply(v));
   e.elastic = model_.elastic->value(state.x);
   e.gravitational = model_.external->value(state.x);
   if (contact) e.contact = contact->energy;
   return e;
 }
 
-void RunOutput::write_time_step(const solver::TimeStepRecord& step, const fem::State& state,
+void RunOutput::write_time_step(const solver::StepRecord& step, const fem::State& state,
                                 const NodalVectors& velocity) {
   const auto contact = contact_statistics(state);
   const DynamicEnergies e = energies(state, velocity, contact ? &*contact : nullptr);
-  write_row({static_cast<long long>(step.step), step.time, step.step_size, static_cast<long long>(step.newton_iterations),
+  write_row({static_cast<long long>(step.step), step.t, step.step_size, static_cast<long long>(step.newton_iterations),
              step.residual, static_cast<long long>(step.cuts), e.kinetic, e.elastic, e.gravitational, e.contact,
              e.total()},
             state, contact ? &*contact : nullptr, /*flush=*/false);
-  write_rigid_row({static_cast<long long>(step.step), step.time}, state, /*flush=*/false);
-}
-
-void RunOutput::write_time_iteration(const solver::TimeStepRecord& step, const solver::IterationRecord& it) {
-  newton_->append({static_cast<long long>(step.step + 1), step.time, static_cast<long long>(it.iteration), it.residual,
-                   it.force_scale, it.energy, it.step_length, static_cast<long long>(it.line_search_steps),
-                   static_cast<long long>(it.linear_iterations), it.increment, it.regularization,
-                   it.equilibrium_residual});
+  write_rigid_row({static_cast<long long>(step.step), step.t}, state, /*flush=*/false);
 }
 
 void RunOutput::write_output(int output, double time, const fem::State& state, const NodalVectors& velocity) {
@@ -147,7 +140,7 @@ void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State&
     row.emplace_back(c.area);
     row.emplace_back(c.max_penetration);
     row.emplace_back(c.mean_penetration);
-    if (!model_.mass) row.emplace_back(c.energy);
+    if (!model_.is_dynamic()) row.emplace_back(c.energy);
     const Index bodies = model_.contact->num_bodies();
     for (const auto& [a, b] : contact_columns_) {
       const Vector3& f = c.body_pair_force[static_cast<std::size_t>(a * bodies + b)];
@@ -172,26 +165,8 @@ void RunOutput::flush_tables() const {
   if (rigid_) rigid_->flush();
 }
 
-void RunOutput::write_dynamic_summary(const solver::DynamicResult& result, double wall_seconds,
-                                      const std::string& scene_name) {
-  flush_tables();
-  nlohmann::json j;
-  j["scene"] = scene_name;
-  j["success"] = result.success;
-  j["status"] = result.success ? "solved" : "stopped";
-  j["message"] = result.message;
-  j["time_reached"] = result.time;
-  j["steps"] = result.steps;
-  j["newton_iterations"] = result.newton_iterations;
-  j["step_cuts"] = result.cuts;
-  j["outputs"] = result.outputs;
-  j["min_time_step"] = result.min_step;
-  j["max_time_step"] = result.max_step;
-  finish_summary(j, wall_seconds, result.times);
-}
-
 void RunOutput::write_iteration(const solver::StepRecord& step, const solver::IterationRecord& it) {
-  newton_->append({static_cast<long long>(step.step), step.lambda, static_cast<long long>(it.iteration), it.residual,
+  newton_->append({static_cast<long long>(step.step), step.t, static_cast<long long>(it.iteration), it.residual,
                    it.force_scale, it.energy, it.step_length, static_cast<long long>(it.line_search_steps),
                    static_cast<long long>(it.linear_iterations), it.increment, it.regularization,
                    it.equilibrium_residual});
@@ -246,19 +221,29 @@ void RunOutput::finish_summary(nlohmann::json& j, double wall_seconds, const sol
   io::write_file_atomically(directory_ + "/summary.json", j.dump(2) + "\n");
 }
 
-void RunOutput::write_summary(const solver::StaticResult& result, double wall_seconds, const std::string& scene_name) {
+void RunOutput::write_summary(const solver::StepperResult& result, double wall_seconds, const std::string& scene_name) {
   flush_tables();
   nlohmann::json j;
   j["scene"] = scene_name;
   j["success"] = result.success;
   j["status"] = result.success ? "solved" : "stopped";
   j["message"] = result.message;
-  j["lambda_reached"] = result.last_converged.lambda;
-  j["increments_completed"] = result.increments_completed;
-  j["steps"] = result.steps;
-  j["newton_iterations"] = result.newton_iterations;
-  j["step_cuts"] = result.cuts;
-  j["snap_throughs"] = result.snap_throughs;
+  if (model_.is_dynamic()) {
+    j["time_reached"] = result.t;
+    j["steps"] = result.steps;
+    j["newton_iterations"] = result.newton_iterations;
+    j["step_cuts"] = result.cuts;
+    j["outputs"] = result.segments_completed + 1;  // the start state included
+    j["min_time_step"] = result.min_step;
+    j["max_time_step"] = result.max_step;
+  } else {
+    j["lambda_reached"] = result.last_state.lambda;
+    j["increments_completed"] = result.segments_completed;
+    j["steps"] = result.steps;
+    j["newton_iterations"] = result.newton_iterations;
+    j["step_cuts"] = result.cuts;
+    j["snap_throughs"] = result.snap_throughs;
+  }
   finish_summary(j, wall_seconds, result.times);
 }
 

@@ -25,9 +25,8 @@
 #include "sinew/io/csv.hpp"
 #include "sinew/io/vtu.hpp"
 #include "sinew/scene/scene_config.hpp"
-#include "sinew/solver/dynamic_solver.hpp"
-#include "sinew/solver/static_solver.hpp"
-#include "static_model.hpp"
+#include "sinew/model/model.hpp"
+#include "sinew/solver/stepper.hpp"
 
 namespace sinew::app {
 
@@ -43,25 +42,24 @@ struct DynamicEnergies {
 class RunOutput {
  public:
   /// Creates nothing on disk until the first write.
-  RunOutput(std::string directory, const fem::Problem& problem, const StaticModel& model,
-            const scene::OutputConfig& config);
+  RunOutput(std::string directory, const model::Model& model, const scene::OutputConfig& config);
 
   void write_step(const solver::StepRecord& step, const fem::State& state);
+  /// A newton.csv row: the step being attempted, its lambda or time, the iteration.
   void write_iteration(const solver::StepRecord& step, const solver::IterationRecord& iteration);
   /// VTU of increment k (if due per `every`), added to the .pvd series.
   void write_increment(int increment, int increments, const fem::State& state);
   void write_state(const std::string& file_name, const fem::State& state);
   // Dynamics: steps.csv has time and the energies instead of lambda; VTUs per output time carry
   // the velocity.
-  void write_time_step(const solver::TimeStepRecord& step, const fem::State& state, const NodalVectors& velocity);
-  void write_time_iteration(const solver::TimeStepRecord& step, const solver::IterationRecord& iteration);
+  void write_time_step(const solver::StepRecord& step, const fem::State& state, const NodalVectors& velocity);
   void write_output(int output, double time, const fem::State& state, const NodalVectors& velocity);
-  void write_dynamic_summary(const solver::DynamicResult& result, double wall_seconds, const std::string& scene_name);
   /// Kinetic, elastic and gravitational energy of a state; the contact energy is taken from
   /// `contact` (statistics of the same state) when the model has contact.
   DynamicEnergies energies(const fem::State& state, const NodalVectors& velocity,
                            const contact::ContactStatistics* contact) const;
-  void write_summary(const solver::StaticResult& result, double wall_seconds, const std::string& scene_name);
+  /// summary.json of a finished run, solved or stopped (keys of a static or a dynamic analysis).
+  void write_summary(const solver::StepperResult& result, double wall_seconds, const std::string& scene_name);
   /// summary.json of a run stopped by something other than the solve (`status`: "output_error",
   /// "out_of_memory"), with the load parameter or time reached (`reached_key`: lambda_reached or
   /// time_reached); the CSV logs are flushed first.
@@ -92,7 +90,7 @@ class RunOutput {
   std::string directory_;
   double setup_seconds_ = 0;
   const fem::Problem& problem_;
-  const StaticModel& model_;
+  const model::Model& model_;
   scene::OutputConfig config_;
   std::unique_ptr<io::CsvTable> steps_;
   std::unique_ptr<io::CsvTable> newton_;

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "sinew/scene/scene_config.hpp"
-#include "sinew/solver/dynamic_solver.hpp"
-#include "sinew/solver/static_solver.hpp"
+#include "sinew/model/model.hpp"
+#include "sinew/solver/stepper.hpp"
 
 namespace sinew::app {
 
@@ -27,8 +27,7 @@ struct RunReport {
   std::string message;
   double wall_seconds = 0;
   double setup_seconds = 0;  ///< of wall_seconds: meshing, material depth, model set-up
-  solver::StaticResult result;         ///< static analyses
-  solver::DynamicResult dynamic_result;  ///< dynamic analyses
+  solver::StepperResult result;
 };
 
 /// Builds and solves the scene. Input errors (InputError) propagate before anything is
@@ -37,5 +36,10 @@ struct RunReport {
 /// (OutputError) or exhausted memory (OutOfMemoryError, from std::bad_alloc too) propagates
 /// after summary.json has recorded where the run stopped, if it could still be written.
 RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options);
+
+/// The same with a model built already (by model::build_model; `setup_seconds` it took). The
+/// model's state is changed by the run (the contact pairs, the inertia centre).
+RunReport run_model(model::Model& model, const scene::OutputConfig& output, const RunOptions& options,
+                    double setup_seconds = 0);
 
 }  // namespace sinew::app

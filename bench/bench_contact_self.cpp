@@ -1,5 +1,5 @@
 /// Benchmark: collision detection and contact assembly on a self-contact scene, against the
-/// time of one full Newton iteration (GUIDE.md sections 1 and 3).
+/// time of one full Newton iteration (dissertation section 5.4 and docs/theory.md).
 ///
 /// Scene (lengths in mm, stresses in kPa): one Mooney-Rivlin slab (C1 = 0.4, C2 = 0.1, a = 2),
 /// 208 x 8 x 4 cubes of edge h = 1 mm split into 6 tets each (39,936 tets), wrapped around the
@@ -14,7 +14,7 @@
 /// One "Newton iteration" at a slightly perturbed copy of that configuration (so the contact
 /// term must refit, query and clip again) is: full gradient, energy (one line-search
 /// evaluation), Objective::hessian (elastic + contact Hessians, reduction to q-space), CHOLMOD
-/// factorization + solve (with the Newton loop's diagonal shift when K is not positive
+/// factorization + solve by solver::newton_direction itself (with the diagonal shift and its hint when K is not positive
 /// definite). The phases are timed through a timing wrapper around each energy term. Printed:
 /// Google Benchmark counters (mean ms per phase), then a per-phase table with the contact share
 /// of the iteration and the seed's three-way split (forces and stiffness / collision / linear
@@ -50,6 +50,7 @@
 #include "sinew/material/material_spec.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
 #include "sinew/solver/linear_solver.hpp"
+#include "sinew/solver/newton_direction.hpp"
 #include "sinew/solver/objective.hpp"
 
 using namespace sinew;
@@ -301,43 +302,53 @@ Positions perturbed(const Positions& x, double h, unsigned seed) {
   return y;
 }
 
-/// K dq = -g as the Newton loop solves it: CHOLMOD, retried with K + shift diag|K| (shift from
-/// 1e-8, tenfold) when the factorization fails or dq is not a descent direction.
-void newton_direction(const fem::SparseMatrix& K, bool fresh, const VectorX& g, solver::LinearSolver& linear,
-                      Phases& ph) {
-  if (fresh) {
+/// The linear solver with the time of each call added to a Phases record.
+class TimedLinearSolver final : public solver::LinearSolver {
+ public:
+  explicit TimedLinearSolver(std::unique_ptr<solver::LinearSolver> inner) : inner_(std::move(inner)) {}
+  void analyze(const fem::SparseMatrix& K) override {
     const auto t0 = Clock::now();
-    linear.analyze(K);
-    ph.analyze += seconds_since(t0);
+    inner_->analyze(K);
+    if (phases_) phases_->analyze += seconds_since(t0);
   }
-  const VectorX diag = K.diagonal().cwiseAbs().cwiseMax(1e-300);
-  double shift = 0;
-  fem::SparseMatrix shifted;
-  for (int attempt = 0; attempt < 12; ++attempt) {
-    const fem::SparseMatrix* M = &K;
-    auto t0 = Clock::now();
-    if (shift > 0) {
-      shifted = K;
-      for (int k = 0; k < shifted.outerSize(); ++k) shifted.coeffRef(k, k) += shift * diag[k];
-      M = &shifted;
-    }
-    const bool ok = linear.factorize(*M);
-    ph.factorize += seconds_since(t0);
-    ph.factorizations += 1;
-    if (ok) {
-      t0 = Clock::now();
-      VectorX dq;
-      const auto stats = linear.solve(-g, dq);
-      ph.solve += seconds_since(t0);
-      if (stats.success && g.dot(dq) < 0) {
-        if (shift > 0) ph.regularized += 1;
-        ph.relative_residual += stats.relative_residual;
-        return;
-      }
-    }
-    shift = shift == 0 ? 1e-8 : shift * 10;
+  bool factorize(const fem::SparseMatrix& K) override {
+    const auto t0 = Clock::now();
+    const bool ok = inner_->factorize(K);
+    if (phases_) phases_->factorize += seconds_since(t0);
+    return ok;
   }
-  ph.regularized += 1;
+  solver::LinearSolveStats solve(const VectorX& b, VectorX& x) override {
+    const auto t0 = Clock::now();
+    const solver::LinearSolveStats stats = inner_->solve(b, x);
+    if (phases_) {
+      phases_->solve += seconds_since(t0);
+      last_relative_residual_ = stats.relative_residual;
+    }
+    return stats;
+  }
+  const char* name() const override { return inner_->name(); }
+  /// Where the times go (null: nowhere).
+  void record_into(Phases* phases) { phases_ = phases; }
+  double last_relative_residual() const { return last_relative_residual_; }
+
+ private:
+  std::unique_ptr<solver::LinearSolver> inner_;
+  Phases* phases_ = nullptr;
+  double last_relative_residual_ = 0;
+};
+
+/// K dq = -g by the Newton loop's own solver::newton_direction (diagonal shift when K is not
+/// positive definite, starting from the hint of the previous iteration), timed per phase.
+/// Returns the shift hint for the next iteration.
+double timed_newton_direction(const fem::SparseMatrix& K, bool fresh, const VectorX& g, TimedLinearSolver& linear,
+                              double shift_hint, Phases& ph) {
+  linear.record_into(&ph);
+  const solver::Direction d = solver::newton_direction(K, fresh, g, linear, shift_hint);
+  linear.record_into(nullptr);
+  ph.factorizations += d.factorizations;
+  if (d.regularization > 0) ph.regularized += 1;
+  ph.relative_residual += linear.last_relative_residual();
+  return std::isfinite(d.regularization) ? d.regularization / 100 : 0;
 }
 
 void BM_SelfContactNewtonIteration(benchmark::State& state, contact::ContactMethod method,
@@ -352,7 +363,8 @@ void BM_SelfContactNewtonIteration(benchmark::State& state, contact::ContactMeth
   TermTimes elastic_times, contact_times;
   TimedEnergy timed_elastic(elastic, elastic_times), timed_contact(contact, contact_times);
   solver::Objective objective(dofs, {&timed_elastic, &timed_contact}, n);
-  auto linear = solver::make_linear_solver(solver::LinearSolverOptions{});
+  TimedLinearSolver linear(solver::make_linear_solver(solver::LinearSolverOptions{}));
+  double shift_hint = 0;
 
   RunInfo info;
   fem::State st;
@@ -370,7 +382,7 @@ void BM_SelfContactNewtonIteration(benchmark::State& state, contact::ContactMeth
     Phases warm;
     const NodalVectors g = objective.full_gradient(st);
     const bool fresh = objective.hessian(st, g, VectorX(), K);
-    newton_direction(K, fresh, dofs.reduce_gradient(st, g), *linear, warm);
+    shift_hint = timed_newton_direction(K, fresh, dofs.reduce_gradient(st, g), linear, shift_hint, warm);
   }
 
   Phases sum;
@@ -400,7 +412,7 @@ void BM_SelfContactNewtonIteration(benchmark::State& state, contact::ContactMeth
     const VectorX gq = dofs.reduce_gradient(st, g);
     const double hess_seconds = seconds_since(t_hess);
     if (objective.full_hessian().pattern_version() != pattern_before) ph.pattern_rebuilds += 1;
-    newton_direction(K, fresh, gq, *linear, ph);
+    shift_hint = timed_newton_direction(K, fresh, gq, linear, shift_hint, ph);
     ph.wall = seconds_since(t_iter);
     ph.cpu = process_cpu_seconds() - cpu_iter;
     ph.pairs = static_cast<double>(contact.active_pairs().size());

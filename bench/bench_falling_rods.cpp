@@ -39,8 +39,8 @@ void BM_FallingRods(benchmark::State& state, bool reduced) {
   const scene::SceneConfig config = falling_rods(reduced);
   for (auto _ : state) {
     const app::RunReport report = bench::run_once(state, config, "falling_rods");
-    const auto& r = report.dynamic_result;
-    state.counters["simulated_s"] = r.time;
+    const auto& r = report.result;
+    state.counters["simulated_s"] = r.t;
     state.counters["steps"] = r.steps;
     state.counters["newton_its"] = r.newton_iterations;
     state.counters["cuts"] = r.cuts;

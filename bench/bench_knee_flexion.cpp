@@ -29,7 +29,7 @@ void BM_KneeFlexion(benchmark::State& state, double element_size) {
   for (auto _ : state) {
     const app::RunReport report = bench::run_once(state, config, "knee");
     const auto& r = report.result;
-    state.counters["increments"] = r.increments_completed;
+    state.counters["increments"] = r.segments_completed;
     state.counters["steps"] = r.steps;
     state.counters["newton_its"] = r.newton_iterations;
     state.counters["cuts"] = r.cuts;

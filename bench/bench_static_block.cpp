@@ -7,8 +7,7 @@
 
 #include <chrono>
 
-#include "sinew/scene/build_problem.hpp"
-#include "static_model.hpp"
+#include "sinew/model/solve_model.hpp"
 
 using namespace sinew;
 
@@ -60,13 +59,13 @@ void BM_CompressBlock(benchmark::State& state, solver::LoadSteppingOptions::Pred
     scene.solver.linear.max_iterations = 500;
     scene.solver.newton.max_iterations = 200;
   }
-  const auto t0 = std::chrono::steady_clock::now();
-  const fem::Problem problem = scene::build_problem(scene);
-  const double mesh_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   for (auto _ : state) {
-    const app::StaticModel model = app::make_static_model(problem, scene.solver);
+    const auto t0 = std::chrono::steady_clock::now();
+    model::Model model = model::build_model(scene);
+    const double mesh_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const fem::Problem& problem = *model.problem;
     const auto start = std::chrono::steady_clock::now();
-    const auto result = solver::solve_static(*model.objective, scene.solver, model.setup);
+    const auto result = model::solve_model(model);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     state.SetIterationTime(seconds);
     if (!result.success) state.SkipWithError(result.message.c_str());

@@ -101,9 +101,14 @@ TEST(ExitCodes, AFreeMasslessRigidBodyInAnExplicitRunIsAnInputError) {
   scene["dynamics"]["output_interval"] = 0.001;
   const fs::path path = directory / "scene.json";
   write_text(path, scene.dump(2));
+  // validate builds exactly the model run builds, so it refuses the scene too.
+  const CommandResult validated = run_sinew({"validate", path.string()}, directory);
+  EXPECT_EQ(validated.exit_code, 1) << validated.err;
+  EXPECT_THAT(validated.err, HasSubstr("density"));
   const CommandResult result = run_scene_file(path, directory / "out", directory);
   EXPECT_EQ(result.exit_code, 1) << result.err;
   EXPECT_THAT(result.err, HasSubstr("density"));
+  EXPECT_FALSE(fs::exists(directory / "out" / "summary.json")) << "nothing is written for an input error";
 }
 
 }  // namespace

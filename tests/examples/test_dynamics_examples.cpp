@@ -61,9 +61,9 @@ TEST(DynamicsExamples, SaggingBarsSettleOnTheStaticSolution) {
   ScratchDirectory directory;
   const ExampleRun run = run_example("sagging-bars", directory);
   ASSERT_TRUE(run.report.success) << run.report.message;
-  const auto& result = run.report.dynamic_result;
+  const auto& result = run.report.result;
   EXPECT_EQ(result.cuts, 0);
-  EXPECT_NEAR(result.time, 8.0, 1e-12);
+  EXPECT_NEAR(result.t, 8.0, 1e-12);
 
   // One VTU per 0.1 s of simulated time, with the velocity, listed at exact output times.
   const auto pvd = read_pvd(run.output / "sinew.pvd");
@@ -162,8 +162,8 @@ TEST(DynamicsExamples, FallingRodsHitTheBarWithBoundedPenetrationAndNoInvertedEl
   std::printf("[ example  ] falling-rods reduced: %d steps, %d Newton iterations, %d cuts; bar first touched at "
               "t = %.3f s, largest bar push %.4f N (rods' weight %.4f N), rod-rod contact %.4f N, max penetration "
               "%.3g mm (rod radius 4 mm)\n",
-              run.report.dynamic_result.steps, run.report.dynamic_result.newton_iterations,
-              run.report.dynamic_result.cuts, first_bar_contact, max_bar_push, weight, max_rod_rod,
+              run.report.result.steps, run.report.result.newton_iterations,
+              run.report.result.cuts, first_bar_contact, max_bar_push, weight, max_rod_rod,
               1e3 * max_penetration);
   EXPECT_GT(first_bar_contact, 0) << "the lowest rods must hit the bar";
   EXPECT_GT(max_bar_push, 0.01 * weight);
@@ -215,8 +215,8 @@ TEST(DynamicsExamples, BallDropRestsInTheSameStateExplicitAndImplicit) {
     }
   sag_implicit /= ball_nodes;
   sag_explicit /= ball_nodes;
-  const auto& ri = implicit_run.report.dynamic_result;
-  const auto& re = explicit_run.report.dynamic_result;
+  const auto& ri = implicit_run.report.result;
+  const auto& re = explicit_run.report.result;
   const auto steps_i = read_csv(implicit_run.output / "steps.csv"), steps_e = read_csv(explicit_run.output / "steps.csv");
   const double pen_i = steps_i.column_max("max_penetration"), pen_e = steps_e.column_max("max_penetration");
   std::printf("[ example  ] ball-drop: implicit %d steps (h %.3g .. %.3g), %d Newton iterations, %.2f s; explicit %d "
@@ -255,11 +255,11 @@ TEST(DynamicsExamples, ExplicitCentralDifferencesConserveEnergyWithoutViscosity)
   const double peak_kinetic = *std::max_element(e.kinetic.begin(), e.kinetic.end());
   std::printf("[ example  ] explicit, no viscosity: %d steps of %.3g s, peak kinetic %.4g J, largest energy drift "
               "%.3g J (%.2g of the scale %.4g J)\n",
-              run.report.dynamic_result.steps, run.report.dynamic_result.max_step, peak_kinetic, drift,
+              run.report.result.steps, run.report.result.max_step, peak_kinetic, drift,
               drift / e.scale, e.scale);
   EXPECT_GT(peak_kinetic, 0.1 * e.scale);
   EXPECT_LT(drift, 1e-3 * e.scale);
-  EXPECT_GT(run.report.dynamic_result.steps, 1000) << "explicit needs many small steps";
+  EXPECT_GT(run.report.result.steps, 1000) << "explicit needs many small steps";
 }
 
 TEST(DynamicsExamples, ViscosityMakesTheTotalEnergyDecreaseForEveryIntegrator) {

@@ -28,7 +28,7 @@ TEST(KneeExamples, CoarseFlexionMovesThePatellaDistallyWithoutInversionOrDeepPen
   ScratchDirectory directory;
   const ExampleRun run = run_config(config, directory, "knee-flexion (20 mm, 30 degrees)");
   ASSERT_TRUE(run.report.success) << run.report.message;
-  EXPECT_EQ(run.report.result.increments_completed, 10);
+  EXPECT_EQ(run.report.result.segments_completed, 10);
 
   const auto steps = read_csv(run.output / "steps.csv");
   const auto rigid = read_csv(run.output / "rigid_bodies.csv");

@@ -13,8 +13,8 @@
 #include "sinew/fem/mass_matrix.hpp"
 #include "sinew/fem/quadratic_energy.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
-#include "sinew/solver/dynamic_solver.hpp"
-#include "sinew/solver/static_solver.hpp"
+#include "sinew/solver/time_stepping.hpp"
+#include "sinew/solver/load_stepping.hpp"
 #include "support/problem_builder.hpp"
 #include "support/solver_rig.hpp"
 
@@ -50,11 +50,11 @@ solver::StaticSolverOptions tight_options(int increments, Predictor predictor) {
   return options;
 }
 
-const solver::StaticSetup kUnitCube{.characteristic_length = std::sqrt(3.0), .reference_force = 1.0};
+const solver::NewtonSetup kUnitCube{.characteristic_length = std::sqrt(3.0), .reference_force = 1.0};
 
 /// What a static run did, step by step.
 struct StaticTrace {
-  solver::StaticResult result;
+  solver::StepperResult result;
   std::vector<double> lateral;       ///< s after each accepted step (s = 1 at lambda = 0)
   std::vector<double> lambda;        ///< lambda after each accepted step (0 first)
   std::map<int, double> start_energy;    ///< per step: Pi at the Newton start (iteration 0)
@@ -66,7 +66,7 @@ struct StaticTrace {
 /// Solves uniaxial tension (stretch, Mooney-Rivlin kC1, kC2, kA) and checks the end state
 /// against the closed form (1e-9) when the run succeeds.
 StaticTrace run_uniaxial(double stretch, const solver::StaticSolverOptions& options,
-                         const solver::StaticSetup& setup = kUnitCube) {
+                         const solver::NewtonSetup& setup = kUnitCube) {
   st::SolverRig rig(st::uniaxial_problem(stretch, kC1, kC2, kA));
   // The node at rest (1, 1, 1) sits at (l, s, s).
   Index corner = -1;
@@ -75,7 +75,7 @@ StaticTrace run_uniaxial(double stretch, const solver::StaticSolverOptions& opti
   StaticTrace trace;
   trace.lateral.push_back(1.0);
   trace.lambda.push_back(0.0);
-  solver::StaticCallbacks callbacks;
+  solver::StepperCallbacks callbacks;
   double last_residual = 0;
   callbacks.on_iteration = [&](const solver::StepRecord& step, const solver::IterationRecord& it) {
     if (it.iteration > 0 && it.residual > last_residual) ++trace.residual_increases;
@@ -85,13 +85,13 @@ StaticTrace run_uniaxial(double stretch, const solver::StaticSolverOptions& opti
     trace.start_energy[step.step] = it.energy;
     trace.start_residual[step.step] = it.residual;
   };
-  callbacks.on_step = [&](const solver::StepRecord& step, const fem::State& state) {
+  callbacks.on_step = [&](const solver::StepRecord& step, const fem::State& state, const NodalVectors&) {
     trace.lateral.push_back(state.x(corner, 1));
-    trace.lambda.push_back(step.lambda);
+    trace.lambda.push_back(step.t);
   };
   trace.result = solver::solve_static(*rig.objective, options, setup, callbacks);
   if (trace.result.success) {
-    EXPECT_LT(distance_from_closed_form(rig.problem, trace.result.last_converged.x, stretch), 1e-9);
+    EXPECT_LT(distance_from_closed_form(rig.problem, trace.result.last_state.x, stretch), 1e-9);
   }
   return trace;
 }
@@ -111,7 +111,7 @@ TEST(SolverOptions, TwoPointPredictorStartsAtTheLinearExtrapolationAndReachesThe
   ASSERT_TRUE(two_point.result.success) << two_point.result.message;
   ASSERT_TRUE(tangent.result.success) << tangent.result.message;
   // The same answer as the tangent predictor (and the closed form, checked in run_uniaxial).
-  EXPECT_LT((two_point.result.last_converged.x - tangent.result.last_converged.x).cwiseAbs().maxCoeff(), 1e-10);
+  EXPECT_LT((two_point.result.last_state.x - tangent.result.last_state.x).cwiseAbs().maxCoeff(), 1e-10);
   // Step 1 has no earlier step to extrapolate from: it starts where Predictor::None does.
   EXPECT_EQ(two_point.start_residual.at(1), none.start_residual.at(1));
 
@@ -152,13 +152,13 @@ TEST(SolverOptions, ResidualLineSearchDecreasesTheResidualAtEveryIterationAndRea
   ASSERT_TRUE(residual_rule.result.success) << residual_rule.result.message;
   EXPECT_GE(energy_rule.residual_increases, 1);
   EXPECT_EQ(residual_rule.residual_increases, 0);
-  EXPECT_LT((residual_rule.result.last_converged.x - energy_rule.result.last_converged.x).cwiseAbs().maxCoeff(),
+  EXPECT_LT((residual_rule.result.last_state.x - energy_rule.result.last_state.x).cwiseAbs().maxCoeff(),
             1e-10);
 }
 
 namespace {
 
-/// Quasi-viscosity per node as the command line builds it (app/static_model.cpp):
+/// Quasi-viscosity per node as model::build_model builds it (src/sinew/model/model.cpp):
 /// D_a = eta * (volume of the tets around node a)^(1/3).
 VectorX node_viscosity(const mesh::TetMesh& mesh, double eta) {
   VectorX volume = VectorX::Zero(mesh.num_nodes());
@@ -178,13 +178,13 @@ TEST(SolverOptions, QuasiViscosityChangesTheNewtonPathButNotTheEquilibrium) {
   solver::StaticSolverOptions options = tight_options(4, Predictor::Tangent);
   options.newton.max_iterations = 100;
   const StaticTrace plain = run_uniaxial(stretch, options);
-  solver::StaticSetup viscous = kUnitCube;
+  solver::NewtonSetup viscous = kUnitCube;
   viscous.node_viscosity = node_viscosity(st::uniaxial_problem(stretch, kC1, kC2, kA).mesh, 0.1);
   const StaticTrace damped = run_uniaxial(stretch, options, viscous);
   ASSERT_TRUE(plain.result.success) << plain.result.message;
   ASSERT_TRUE(damped.result.success) << damped.result.message;
   // Both match the closed form (run_uniaxial) and each other.
-  EXPECT_LT((damped.result.last_converged.x - plain.result.last_converged.x).cwiseAbs().maxCoeff(), 1e-10);
+  EXPECT_LT((damped.result.last_state.x - plain.result.last_state.x).cwiseAbs().maxCoeff(), 1e-10);
   // Measured: 40 Newton iterations against 12: the viscous term shortens every step.
   EXPECT_GT(damped.result.newton_iterations, plain.result.newton_iterations + 10);
 }
@@ -204,7 +204,7 @@ TEST(SolverOptions, QuasistaticIntegrationSettlesAtTheStaticSolution) {
   options.newton.residual_tolerance = 1e-10;
   const auto reference = solver::solve_static(*statics.objective, options, {.characteristic_length = 4.0, .reference_force = 16.0});
   ASSERT_TRUE(reference.success) << reference.message;
-  const double static_tip = reference.last_converged.x.col(2).minCoeff();
+  const double static_tip = reference.last_state.x.col(2).minCoeff();
 
   // D = c M, M the lumped mass matrix; gravity in full from t = 0 as in the command line.
   const fem::Problem p = bar();
@@ -218,14 +218,14 @@ TEST(SolverOptions, QuasistaticIntegrationSettlesAtTheStaticSolution) {
   dynamics.end_time = 100;
   dynamics.output_interval = 10;
   std::vector<double> tips;
-  solver::DynamicCallbacks callbacks;
-  callbacks.on_step = [&](const solver::TimeStepRecord& step, const fem::State& state, const NodalVectors&) {
+  solver::StepperCallbacks callbacks;
+  callbacks.on_step = [&](const solver::StepRecord& step, const fem::State& state, const NodalVectors&) {
     if (step.step > 0) tips.push_back(state.x.col(2).minCoeff());
   };
   const auto result = solver::solve_dynamic(*run.objective, {.inertia = nullptr, .viscosity = &viscosity}, dynamics,
-                                            options, {.characteristic_length = 4.0, .reference_force = 16.0}, callbacks);
+                                            options, {.characteristic_length = 4.0, .reference_force = 16.0}, {}, callbacks);
   ASSERT_TRUE(result.success) << result.message;
-  EXPECT_NEAR(result.time, dynamics.end_time, 1e-12);
+  EXPECT_NEAR(result.t, dynamics.end_time, 1e-12);
   // The path is viscous: the first step (h = 1) reaches about 40 % of the static sag (measured
   // tip -0.79 against -1.93), and the tip then creeps down without overshooting.
   ASSERT_GE(tips.size(), 2u);
@@ -233,5 +233,5 @@ TEST(SolverOptions, QuasistaticIntegrationSettlesAtTheStaticSolution) {
   for (std::size_t k = 1; k < tips.size(); ++k) EXPECT_LE(tips[k], tips[k - 1] + 1e-9) << "step " << k + 1;
   // At t = 100 (the first step suggests a relaxation time near 1.5) it is the static solution:
   // measured largest node distance 1.0e-9.
-  EXPECT_LT((result.last_state.x - reference.last_converged.x).rowwise().norm().maxCoeff(), 1e-7);
+  EXPECT_LT((result.last_state.x - reference.last_state.x).rowwise().norm().maxCoeff(), 1e-7);
 }

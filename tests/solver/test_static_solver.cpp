@@ -6,7 +6,7 @@
 #include "sinew/fem/elastic_energy.hpp"
 #include "sinew/fem/external_force_energy.hpp"
 #include "sinew/fem/reactions.hpp"
-#include "sinew/solver/static_solver.hpp"
+#include "sinew/solver/load_stepping.hpp"
 #include "support/problem_builder.hpp"
 #include "support/solver_rig.hpp"
 
@@ -28,15 +28,15 @@ TEST(StaticSolver, UniaxialMooneyRivlinMatchesClosedForm) {
   ASSERT_TRUE(result.success) << result.message;
 
   const auto [s, axial] = mooney_rivlin_uniaxial(C1, C2, a, stretch);
-  const auto& x = result.last_converged.x;
+  const auto& x = result.last_state.x;
   for (Index v = 0; v < x.rows(); ++v) {
     const Vector3 X = run.problem.mesh.rest.row(v).transpose();
     EXPECT_NEAR(x(v, 0), stretch * X.x(), 1e-9);
     EXPECT_NEAR(x(v, 1), s * X.y(), 1e-9);
     EXPECT_NEAR(x(v, 2), s * X.z(), 1e-9);
   }
-  const auto g = run.objective->full_gradient(result.last_converged);
-  const auto reactions = fem::compute_reactions(run.problem, *run.dofs, result.last_converged, g);
+  const auto g = run.objective->full_gradient(result.last_state);
+  const auto reactions = fem::compute_reactions(run.problem, *run.dofs, result.last_state, g);
   // "pull" holds the x = 1 face: its force on the body is the nominal stress times the unit rest
   // area, pulling in +x; "x0" pulls the other way.
   const double force = reactions[3].force.x();
@@ -65,7 +65,7 @@ TEST(StaticSolver, PatchTestOnADistortedMeshReproducesTheHomogeneousState) {
   const double s = mooney_rivlin_uniaxial(C1, C2, a, stretch).first;
   for (Index v = 0; v < run.problem.mesh.num_nodes(); ++v) {
     const Vector3 X = run.problem.mesh.rest.row(v).transpose();
-    EXPECT_NEAR((result.last_converged.x.row(v).transpose() - Vector3(stretch * X.x(), s * X.y(), s * X.z())).norm(), 0,
+    EXPECT_NEAR((result.last_state.x.row(v).transpose() - Vector3(stretch * X.x(), s * X.y(), s * X.z())).norm(), 0,
                 1e-9);
   }
 }
@@ -91,7 +91,7 @@ TEST(StaticSolver, RigidBoundaryMotionMovesTheInteriorRigidly) {
   ASSERT_TRUE(result.success) << result.message;
   for (Index v = 0; v < run.problem.mesh.num_nodes(); ++v) {
     const Vector3 expected = motion.apply(run.problem.mesh.rest.row(v).transpose(), 1.0);
-    EXPECT_NEAR((result.last_converged.x.row(v).transpose() - expected).norm(), 0, 1e-8);
+    EXPECT_NEAR((result.last_state.x.row(v).transpose() - expected).norm(), 0, 1e-8);
   }
 }
 
@@ -103,7 +103,7 @@ TEST(StaticSolver, NewtonConvergesQuadraticallyOnASmoothCase) {
   options.newton.residual_tolerance = 1e-13;
   options.newton.increment_tolerance = 0;
   std::vector<double> residuals;
-  solver::StaticCallbacks callbacks;
+  solver::StepperCallbacks callbacks;
   callbacks.on_iteration = [&](const solver::StepRecord& step, const solver::IterationRecord& it) {
     if (step.step == 1) residuals.push_back(it.residual / it.force_scale);
   };
@@ -139,7 +139,7 @@ TEST_P(LinearSolverKinds, GravitySagOfAClampedBarAgrees) {
   ASSERT_TRUE(result.success) << result.message;
   // Tip deflection of the reference (CHOLMOD, tight tolerance) run.
   static double reference = 0;
-  const double tip = result.last_converged.x.col(2).minCoeff();
+  const double tip = result.last_state.x.col(2).minCoeff();
   if (GetParam() == solver::LinearSolverOptions::Kind::Cholmod) reference = tip;
   EXPECT_LT(tip, -0.01);
   if (reference != 0) {
@@ -167,10 +167,10 @@ TEST(StaticSolver, ImpossibleMotionFailsClearlyAndKeepsTheLastConvergedState) {
   EXPECT_FALSE(result.success);
   EXPECT_NE(result.message.find("could not be solved"), std::string::npos) << result.message;
   EXPECT_NE(result.message.find("last converged"), std::string::npos) << result.message;
-  EXPECT_GE(result.increments_completed, 2);
-  EXPECT_LT(result.increments_completed, 4);
-  EXPECT_TRUE(run.objective->is_valid(result.last_converged));
-  EXPECT_GT(result.last_converged.lambda, 0.5);
+  EXPECT_GE(result.segments_completed, 2);
+  EXPECT_LT(result.segments_completed, 4);
+  EXPECT_TRUE(run.objective->is_valid(result.last_state));
+  EXPECT_GT(result.last_state.lambda, 0.5);
 }
 
 TEST(StaticSolver, FreeRigidBodyHangingFromASoftBlockCarriesItsWeight) {
@@ -200,13 +200,13 @@ TEST(StaticSolver, FreeRigidBodyHangingFromASoftBlockCarriesItsWeight) {
   const auto result =
       solver::solve_static(*run.objective, options, {.characteristic_length = 3.0, .reference_force = 90.0});
   ASSERT_TRUE(result.success) << result.message;
-  const auto g = run.objective->full_gradient(result.last_converged);
-  const auto reactions = fem::compute_reactions(run.problem, *run.dofs, result.last_converged, g);
+  const auto g = run.objective->full_gradient(result.last_state);
+  const auto reactions = fem::compute_reactions(run.problem, *run.dofs, result.last_state, g);
   const double total_weight = (1.0 * 2.0 + 20.0 * 1.0) * 1.0;  // soft: 2 volume units, weight: 1
   EXPECT_NEAR(reactions[0].force.z(), total_weight, 1e-8 * total_weight);
   EXPECT_LT(reactions[1].force.norm(), 1e-8 * total_weight);  // a free body needs no support
   // The weight moved down.
-  const auto& pose = result.last_converged.rigid[0];
+  const auto& pose = result.last_state.rigid[0];
   EXPECT_LT(pose.t.z(), -1e-3);
   // Compare with the same weight made of a very stiff deformable material: the free rigid body
   // must behave as its stiff limit (the tilt comes from the mesh's diagonal, the same in both).
@@ -223,7 +223,7 @@ TEST(StaticSolver, FreeRigidBodyHangingFromASoftBlockCarriesItsWeight) {
       solver::solve_static(*stiff.objective, options, {.characteristic_length = 3.0, .reference_force = 90.0});
   ASSERT_TRUE(stiff_result.success) << stiff_result.message;
   for (Index a : run.dofs->rigid_members(0)) {
-    const double gap = (result.last_converged.x.row(a) - stiff_result.last_converged.x.row(a)).norm();
+    const double gap = (result.last_state.x.row(a) - stiff_result.last_state.x.row(a)).norm();
     EXPECT_LT(gap, 1e-2 * std::abs(pose.t.z())) << "node " << a;
   }
 }
@@ -289,7 +289,7 @@ TEST(StaticSolver, SnapThroughBudgetCarriesTheSolutionPastALimitPoint) {
   options.stepping.increments = 10;
   options.newton.max_iterations = 4;  // enough for every step but the snap
   options.newton.residual_tolerance = 1e-10;
-  const solver::StaticSetup setup{.characteristic_length = 1.0, .reference_force = 1.0};
+  const solver::NewtonSetup setup{.characteristic_length = 1.0, .reference_force = 1.0};
 
   // Without the snap-through budget, halving never gets past the limit point.
   {
@@ -299,16 +299,16 @@ TEST(StaticSolver, SnapThroughBudgetCarriesTheSolutionPastALimitPoint) {
     const auto result = solver::solve_static(rig.objective, off, setup);
     EXPECT_FALSE(result.success);
     EXPECT_EQ(result.snap_throughs, 0);
-    EXPECT_NEAR(result.last_converged.lambda, 0.82, 0.02) << "stuck at the limit point";
+    EXPECT_NEAR(result.last_state.lambda, 0.82, 0.02) << "stuck at the limit point";
     EXPECT_NE(result.message.find("could not be solved"), std::string::npos) << result.message;
   }
   // With it (the default: after 2 failed attempts), the long attempt walks down into the right
   // well and the stepping goes on.
   DoubleWellRig rig;
   std::vector<double> snap_lambdas;
-  solver::StaticCallbacks callbacks;
-  callbacks.on_step = [&](const solver::StepRecord& step, const fem::State&) {
-    if (step.snap_through) snap_lambdas.push_back(step.lambda);
+  solver::StepperCallbacks callbacks;
+  callbacks.on_step = [&](const solver::StepRecord& step, const fem::State&, const NodalVectors&) {
+    if (step.snap_through) snap_lambdas.push_back(step.t);
   };
   const auto result = solver::solve_static(rig.objective, options, setup, callbacks);
   ASSERT_TRUE(result.success) << result.message;
@@ -320,7 +320,7 @@ TEST(StaticSolver, SnapThroughBudgetCarriesTheSolutionPastALimitPoint) {
   // At lambda = 1 the tilt is 0.6 k: the single root of u^3 - u = 0.6, in the right well.
   double root = 1.2;
   for (int i = 0; i < 50; ++i) root -= (root * root * root - root - 0.6) / (3 * root * root - 1);
-  const Positions u = result.last_converged.x - rig.problem.mesh.rest;
+  const Positions u = result.last_state.x - rig.problem.mesh.rest;
   EXPECT_NEAR(u.col(0).minCoeff(), root, 1e-8);
   EXPECT_NEAR(u.col(0).maxCoeff(), root, 1e-8);
   EXPECT_LT(u.rightCols(2).cwiseAbs().maxCoeff(), 1e-10);
@@ -361,7 +361,7 @@ TEST(StaticSolver, AFullTurnInOneIncrementIsTakenInStepsOfAtMostThirtyDegrees) {
   ASSERT_TRUE(result.success) << result.message;
   EXPECT_GE(result.steps, 12);
   // Mid-height corners have turned by about 180 degrees: (1, 1) is near (0, 0) and vice versa.
-  const auto& x = result.last_converged.x;
+  const auto& x = result.last_state.x;
   const auto& X = run.problem.mesh.rest;
   int checked = 0;
   for (Index v = 0; v < X.rows(); ++v) {
@@ -373,7 +373,7 @@ TEST(StaticSolver, AFullTurnInOneIncrementIsTakenInStepsOfAtMostThirtyDegrees) {
   }
   EXPECT_GT(checked, 0);
   // The twisted column carries a torque about z, far from zero.
-  const auto g = run.objective->full_gradient(result.last_converged);
+  const auto g = run.objective->full_gradient(result.last_state);
   Vector3 moment = Vector3::Zero();
   for (Index v : st::nodes_on_plane(run.problem.mesh, 2, height))
     moment += (x.row(v) - Eigen::RowVector3d(0.5, 0.5, height)).transpose().cross(-g.row(v).transpose());

@@ -1,4 +1,4 @@
-#include "sinew/solver/newton.hpp"
+#include "sinew/solver/newton_solver.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,22 +7,10 @@
 
 #include <fmt/format.h>
 
+#include "sinew/core/stopwatch.hpp"
+#include "sinew/solver/newton_direction.hpp"
+
 namespace sinew::solver {
-namespace {
-
-class Stopwatch {
- public:
-  explicit Stopwatch(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
-  ~Stopwatch() { sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
-  Stopwatch(const Stopwatch&) = delete;
-  Stopwatch& operator=(const Stopwatch&) = delete;
-
- private:
-  double& sink_;
-  std::chrono::steady_clock::time_point start_;
-};
-
-}  // namespace
 
 PhaseTimer::PhaseTimer(double& sink, const Objective& objective)
     : sink_(sink),
@@ -42,52 +30,6 @@ double largest_displacement(const fem::State& a, const fem::State& b) {
   return (a.x - b.x).rowwise().norm().maxCoeff();
 }
 
-struct Direction {
-  VectorX dq;
-  int linear_iterations = 0;
-  double regularization = 0;
-};
-
-/// Smallest relative diagonal shift tried; below it a shift is no shift.
-constexpr double kSmallestShift = 1e-8;
-
-/// Solves K dq = -g; when K is not positive definite or the result is not a descent direction,
-/// retries with K + shift * diag(K), shift growing tenfold from `first_shift` (0: unshifted
-/// first, then kSmallestShift). Every failed try costs a factorization, so the caller passes a
-/// hint from the previous iteration when that one needed a shift.
-Direction newton_direction(const fem::SparseMatrix& K, bool fresh_pattern, const VectorX& g, LinearSolver& linear,
-                           PhaseTimes& times, double first_shift) {
-  Stopwatch watch(times.linear_solve);
-  Direction d;
-  if (fresh_pattern) linear.analyze(K);
-  const VectorX diag = K.diagonal().cwiseAbs().cwiseMax(1e-300);
-  double shift = first_shift >= kSmallestShift ? first_shift : 0;
-  fem::SparseMatrix shifted;
-  for (int attempt = 0; attempt < 12; ++attempt) {
-    const fem::SparseMatrix* M = &K;
-    if (shift > 0) {
-      shifted = K;
-      for (int k = 0; k < shifted.outerSize(); ++k) shifted.coeffRef(k, k) += shift * diag[k];
-      M = &shifted;
-    }
-    if (linear.factorize(*M)) {
-      VectorX dq;
-      const LinearSolveStats stats = linear.solve(-g, dq);
-      d.linear_iterations += stats.iterations;
-      if (stats.success && g.dot(dq) < 0) {
-        d.dq = std::move(dq);
-        d.regularization = shift;
-        return d;
-      }
-    }
-    shift = shift == 0 ? kSmallestShift : shift * 10;
-  }
-  // Last resort: diagonally scaled steepest descent.
-  d.dq = -g.cwiseQuotient(diag);
-  d.regularization = std::numeric_limits<double>::infinity();
-  return d;
-}
-
 /// |g_q| of the objective without the transient terms, from the full gradient `full_g` at `state`.
 double equilibrium_residual(const fem::DofMap& dofs, const fem::State& state, const NodalVectors& full_g,
                             double residual, const std::vector<const Energy*>& transient_terms) {
@@ -102,9 +44,32 @@ constexpr double kRoundoffResidual = 1e-13;
 
 }  // namespace
 
-NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonOptions& options,
-                          LinearSolver& linear, fem::SparseMatrix& K, const NewtonContext& context,
-                          PhaseTimes& times) {
+NewtonSolver::NewtonSolver(Objective& objective, const LinearSolverOptions& linear, NewtonSetup setup)
+    : objective_(objective), linear_(make_linear_solver(linear)), setup_(std::move(setup)) {}
+
+bool NewtonSolver::ensure_factorization(const fem::State& state, const NodalVectors& full_gradient) {
+  if (factorized_) return true;
+  bool fresh;
+  {
+    PhaseTimer watch(times_.forces_and_stiffness, objective_);
+    fresh = objective_.hessian(state, full_gradient, setup_.node_viscosity, K_);
+  }
+  Stopwatch watch(times_.linear_solve);
+  if (fresh) linear_->analyze(K_);
+  factorized_ = linear_->factorize(K_);
+  return factorized_;
+}
+
+bool NewtonSolver::solve_with_last_factorization(const VectorX& rhs, VectorX& x) {
+  if (!factorized_) return false;
+  Stopwatch watch(times_.linear_solve);
+  return linear_->solve(rhs, x).success;
+}
+
+NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options, const IterationCallback& on_iteration) {
+  Objective& objective = objective_;
+  PhaseTimes& times = times_;
+  const NewtonSetup& context = setup_;
   const fem::DofMap& dofs = objective.dofs();
   NewtonResult result;
   double shift_hint = 0;  // relative diagonal shift to try first (see newton_direction)
@@ -131,7 +96,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
   record.force_scale = scale;
   record.energy = energy;
   record.equilibrium_residual = equilibrium_residual(dofs, state, full_g, residual, context.transient_terms);
-  if (context.on_iteration) context.on_iteration(record);
+  if (on_iteration) on_iteration(record);
 
   double increment = std::numeric_limits<double>::infinity();
   for (int it = 0;; ++it) {
@@ -165,9 +130,14 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
     bool fresh;
     {
       PhaseTimer watch(times.forces_and_stiffness, objective);
-      fresh = objective.hessian(state, full_g, context.node_viscosity, K);
+      fresh = objective.hessian(state, full_g, context.node_viscosity, K_);
     }
-    const Direction direction = newton_direction(K, fresh, g, linear, times, shift_hint);
+    Direction direction;
+    {
+      Stopwatch watch(times.linear_solve);
+      direction = newton_direction(K_, fresh, g, *linear_, shift_hint);
+    }
+    factorized_ = true;  // of K_ or a shifted K_: good enough for a predictor
     // An indefinite tangent usually stays indefinite for a few iterations: start the next
     // search a hundredfold below the shift that worked instead of from zero.
     shift_hint = std::isfinite(direction.regularization) ? direction.regularization / 100 : 0;
@@ -239,7 +209,7 @@ NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonO
     record.increment = increment;
     record.regularization = direction.regularization;
     record.equilibrium_residual = equilibrium_residual(dofs, state, full_g, residual, context.transient_terms);
-    if (context.on_iteration) context.on_iteration(record);
+    if (on_iteration) on_iteration(record);
   }
 }
 

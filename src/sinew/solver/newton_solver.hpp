@@ -1,5 +1,5 @@
 #pragma once
-/// @file newton.hpp
+/// @file newton_solver.hpp
 /// Damped Newton on the total potential at a fixed load parameter (dissertation Fig. 12,
 /// loop 2 and 3): direction from K dq = -g (with optional quasi-viscosity), then a line
 /// search that halves the step until the state is legal and the energy (or, as the seed
@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -69,24 +70,55 @@ struct NewtonResult {
   std::string failure;  ///< why it stopped without converging
 };
 
-struct NewtonContext {
+/// What Newton needs to know of the model besides its objective.
+struct NewtonSetup {
   double characteristic_length = 1;  ///< for the increment criterion (length)
   /// Force of order (stiffest initial modulus, shear or bulk) x (characteristic length)^2.
   /// Residuals below 1e-13 of it are round-off and count as converged whatever the relative
   /// criterion says (a state with no load at all has nothing to be relative to). 0 disables
   /// the floor.
   double reference_force = 0;
-  VectorX node_viscosity;            ///< quasi-viscosity per node (force / length), or empty
+  VectorX node_viscosity;  ///< quasi-viscosity per node (force / length), #V, or empty
   /// Terms of the objective that belong to time integration (inertia, viscosity): left out of
   /// IterationRecord::equilibrium_residual. Not owned.
   std::vector<const Energy*> transient_terms;
-  std::function<void(const IterationRecord&)> on_iteration;
 };
 
-/// Runs Newton from `state` (updated in place; on failure it holds the last iterate).
-/// `K` and `linear` keep their pattern and factorization between calls.
-NewtonResult newton_solve(Objective& objective, fem::State& state, const NewtonOptions& options,
-                          LinearSolver& linear, fem::SparseMatrix& K, const NewtonContext& context,
-                          PhaseTimes& times);
+/// Damped Newton on an Objective. Owns the q-space tangent K, the linear solver with its
+/// symbolic analysis and last factorization, and the time per phase, all kept between solves
+/// (the pattern and the analysis are reused while the contact pairs do not change it).
+class NewtonSolver {
+ public:
+  using IterationCallback = std::function<void(const IterationRecord&)>;
+
+  /// `objective` must outlive the solver.
+  NewtonSolver(Objective& objective, const LinearSolverOptions& linear, NewtonSetup setup);
+
+  /// Runs Newton from `state` (updated in place; on failure it holds the last iterate) at the
+  /// objective's current load parameter. `on_iteration` sees the starting state (iteration 0)
+  /// and every accepted iterate.
+  NewtonResult solve(fem::State& state, const NewtonOptions& options, const IterationCallback& on_iteration = {});
+
+  /// Makes sure a factorization exists: when no Newton step has factorized yet, assembles and
+  /// factorizes the tangent at `state` (`full_gradient`: dPi/dx there, #V x 3). Otherwise the
+  /// last factorization (of the last Newton iteration's K, perhaps shifted) stays. Returns
+  /// whether a usable factorization exists.
+  bool ensure_factorization(const fem::State& state, const NodalVectors& full_gradient);
+  /// Solves K x = rhs (#q) with the last factorization; false when that fails.
+  bool solve_with_last_factorization(const VectorX& rhs, VectorX& x);
+
+  Objective& objective() { return objective_; }
+  const NewtonSetup& setup() const { return setup_; }
+  /// Accumulated over the solver's life; `collision` is left to the caller (see PhaseTimes).
+  PhaseTimes& times() { return times_; }
+
+ private:
+  Objective& objective_;
+  std::unique_ptr<LinearSolver> linear_;
+  SparseMatrix K_;
+  bool factorized_ = false;  ///< the linear solver holds a factorization of some K
+  NewtonSetup setup_;
+  PhaseTimes times_;
+};
 
 }  // namespace sinew::solver

@@ -1,0 +1,217 @@
+#include "sinew/model/model.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "sinew/contact/contact_time_step.hpp"
+#include "sinew/core/error.hpp"
+#include "sinew/fem/mass_matrix.hpp"
+#include "sinew/fem/stable_time_step.hpp"
+#include "sinew/mesh/tet_mesh.hpp"
+#include "sinew/scene/build_problem.hpp"
+
+namespace sinew::model {
+namespace {
+
+using Integrator = solver::DynamicOptions::Integrator;
+
+/// Length and force scales of Newton's convergence test, and the quasi-viscosity per node.
+solver::NewtonSetup newton_scales(const fem::Problem& problem, const solver::NewtonOptions& newton) {
+  const auto& mesh = problem.mesh;
+  solver::NewtonSetup scales;
+  const Vector3 extent = mesh.rest.colwise().maxCoeff() - mesh.rest.colwise().minCoeff();
+  const double length = std::max(extent.norm(), 1e-300);
+  // The reference force sets the round-off floor of Newton's residual. Round-off in the elastic
+  // forces scales with the stiffest modulus, the bulk modulus of a nearly incompressible law
+  // (a = 1e6 against C1 = 0.2): scaled by the shear modulus alone, the floor lay below the
+  // round-off of a stress-free rest state, which then failed as "the initial state has no
+  // equilibrium" (Newton could not reduce a residual that is pure round-off).
+  double modulus = 0;
+  for (const auto& law : problem.region_material)
+    if (law) modulus = std::max({modulus, law->initial_shear_modulus(), law->initial_bulk_modulus()});
+  scales.characteristic_length = length;
+  scales.reference_force = (modulus > 0 ? modulus : 1.0) * length * length;
+  if (newton.quasi_viscosity > 0) {
+    // D_a = eta * (volume of the tets around node a)^(1/3): proportional to the local element size.
+    VectorX volume = VectorX::Zero(mesh.num_nodes());
+    for (Index t = 0; t < mesh.num_tets(); ++t) {
+      const double v = std::abs(mesh::signed_volume(mesh.rest, mesh.tets, t));
+      for (int i = 0; i < 4; ++i) volume[mesh.tets(t, i)] += v;
+    }
+    scales.node_viscosity = newton.quasi_viscosity * volume.unaryExpr([](double v) { return std::cbrt(v); });
+  }
+  return scales;
+}
+
+/// Mass, inertia and Rayleigh viscosity of a dynamic analysis, and the elements' critical step.
+Dynamics make_dynamics(const scene::DynamicsConfig& config, const fem::Problem& problem,
+                       const std::vector<material::MaterialPtr>& tet_material, fem::ElasticEnergy& elastic) {
+  const auto& mesh = problem.mesh;
+  Dynamics d;
+  d.options = config.options;
+  const Integrator integrator = config.options.integrator;
+  const fem::MassKind kind = integrator == Integrator::Explicit ? fem::MassKind::Lumped : config.mass;
+  d.mass = std::make_unique<BlockSparseMatrix>(
+      fem::block_mass_matrix(fem::mass_matrix(mesh.rest, mesh.tets, mesh.region, problem.region_density, kind)));
+  if (integrator != Integrator::Quasistatic) d.inertia = std::make_unique<fem::QuadraticEnergy>("inertia", *d.mass);
+  if (config.mass_damping > 0 || config.stiffness_damping > 0) {
+    // K0: the elastic stiffness at rest.
+    std::vector<std::pair<Index, Index>> pairs;
+    elastic.hessian_pattern(pairs);
+    BlockSparseMatrix K0;
+    K0.set_pattern(mesh.num_nodes(), std::move(pairs));
+    elastic.bind_pattern(K0);
+    elastic.add_hessian(mesh.rest, K0);
+    d.viscosity = std::make_unique<fem::QuadraticEnergy>(
+        "viscosity", fem::linear_combination(config.mass_damping, *d.mass, config.stiffness_damping, K0));
+  }
+  if (integrator == Integrator::Explicit) {
+    VectorX tet_density(mesh.num_tets());
+    for (Index t = 0; t < mesh.num_tets(); ++t)
+      tet_density[t] = problem.region_density[static_cast<std::size_t>(mesh.region[t])];
+    d.elastic_critical_time_step = fem::critical_time_step(mesh.rest, mesh.tets, tet_material, tet_density).dt;
+    d.critical_time_step = d.elastic_critical_time_step;
+  }
+  return d;
+}
+
+/// Explicit integration divides by the reduced mass M_q = Jᵀ M J: every unknown needs mass.
+void check_explicit_mass(const Model& model) {
+  fem::DofMap mass_dofs = *model.dofs;
+  const BlockSparseMatrix& M = *model.dynamics->mass;
+  mass_dofs.bind_pattern(M);
+  fem::SparseMatrix Mq;
+  const fem::State rest = mass_dofs.initial_state(0.0);
+  mass_dofs.reduce_hessian(rest, M, NodalVectors::Zero(M.num_nodes(), 3), VectorX(), Mq);
+  if (Mq.rows() > 0 && !(Mq.diagonal().minCoeff() > 0))
+    throw InputError(
+        "dynamics: explicit integration: a moving part has no mass (a region or rigid body of density 0?): give every "
+        "part that is not fixed or prescribed a density > 0");
+}
+
+/// The objective over the current terms (elastic, external, contact, inertia, viscosity).
+void rebuild_objective(Model& model) {
+  std::vector<Energy*> terms{model.elastic.get(), model.external.get()};
+  if (model.contact) terms.push_back(model.contact.get());
+  if (model.dynamics) {
+    if (model.dynamics->inertia) terms.push_back(model.dynamics->inertia.get());
+    if (model.dynamics->viscosity) terms.push_back(model.dynamics->viscosity.get());
+  }
+  model.objective = std::make_unique<solver::Objective>(*model.dofs, std::move(terms), model.problem->mesh.num_nodes());
+}
+
+/// Contact energy from `geometry`; explicit integration's critical step follows its springs.
+void attach_contact(Model& model, contact::ContactGeometry geometry, const contact::ContactOptions& options) {
+  model.contact = std::make_unique<contact::ContactEnergy>(std::move(geometry), options);
+  if (model.dynamics && model.dynamics->options.integrator == Integrator::Explicit) {
+    // The penalty springs of contact are stiffer than the elements when h is small.
+    const auto& mesh = model.problem->mesh;
+    VectorX movable_mass = fem::lumped_masses(mesh.rest, mesh.tets, mesh.region, model.problem->region_density);
+    for (Index a = 0; a < mesh.num_nodes(); ++a) {
+      const auto kind = model.dofs->kind(a);
+      if (kind == fem::DofMap::NodeKind::Prescribed || kind == fem::DofMap::NodeKind::RigidMember) movable_mass[a] = 0;
+    }
+    Dynamics& d = *model.dynamics;
+    d.contact_critical_time_step =
+        contact::contact_critical_time_step(model.contact->geometry(), mesh.rest, movable_mass).dt;
+    d.critical_time_step = std::min(d.elastic_critical_time_step, d.contact_critical_time_step);
+  }
+}
+
+/// The study's penalty against the bound of scene::build_contact: at most
+/// scene::kMaxPenaltyOverAutomatic times the automatic penalty 10 E / h of the pair (times the
+/// largest contact_penalty_scale).
+void check_penalty(const scene::ContactSetup& setup, Index a, Index b, double penalty) {
+  const auto& g = setup.geometry;
+  double largest_scale = 0;
+  if (g.surface_penalty_scale.size() > 0) largest_scale = std::max(largest_scale, g.surface_penalty_scale.maxCoeff());
+  if (g.tet_penalty_scale.size() > 0) largest_scale = std::max(largest_scale, g.tet_penalty_scale.maxCoeff());
+  if (largest_scale == 0) largest_scale = 1;
+  const auto ia = static_cast<std::size_t>(a), ib = static_cast<std::size_t>(b);
+  const double E = std::min(setup.body_young_modulus[ia], setup.body_young_modulus[ib]);
+  const double h = std::min(setup.body_edge_length[ia], setup.body_edge_length[ib]);
+  const double automatic = 10 * E / h;
+  if (!std::isfinite(automatic) || !(automatic > 0)) return;
+  if (penalty * largest_scale > scene::kMaxPenaltyOverAutomatic * automatic)
+    throw InputError(fmt::format(
+        "contact: the penalty {:g} between \"{}\" and \"{}\" is {:.3g} times the automatic penalty 10 E / h = {:.4g}; "
+        "above {:g} times the contact is too stiff for Newton to follow: lower it",
+        penalty, setup.body_names[ia], setup.body_names[ib], penalty * largest_scale / automatic, automatic,
+        scene::kMaxPenaltyOverAutomatic));
+}
+
+void detach_contact(Model& model) {
+  model.contact.reset();
+  if (model.dynamics) {
+    model.dynamics->contact_critical_time_step = 0;
+    model.dynamics->critical_time_step = model.dynamics->elastic_critical_time_step;
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& Model::contact_body_names() const {
+  static const std::vector<std::string> none;
+  return contact_setup ? contact_setup->body_names : none;
+}
+
+Model build_model(const scene::SceneConfig& scene) {
+  Model model;
+  model.name = scene.name;
+  model.problem = std::make_unique<const fem::Problem>(scene::build_problem(scene));
+  const fem::Problem& problem = *model.problem;
+  if (scene.contact.enabled) model.contact_setup = scene::build_contact(scene, problem);
+  model.solver = scene.solver;
+
+  const auto& mesh = problem.mesh;
+  model.tet_material.resize(static_cast<std::size_t>(mesh.num_tets()));
+  for (Index t = 0; t < mesh.num_tets(); ++t) model.tet_material[t] = problem.region_material[mesh.region[t]];
+  model.dofs = std::make_unique<fem::DofMap>(problem);
+  model.elastic = std::make_unique<fem::ElasticEnergy>(
+      mesh.rest, mesh.tets, model.tet_material,
+      fem::ElasticEnergyOptions{.project_hessians = scene.solver.newton.project_element_hessians});
+  const bool dynamic = scene.dynamics.enabled;
+  // Dynamics: gravity and loads act in full from t = 0.
+  model.external = std::make_unique<fem::ExternalForceEnergy>(
+      fem::lumped_masses(mesh.rest, mesh.tets, mesh.region, problem.region_density), problem.gravity,
+      dynamic ? fem::Amplitude{{{0.0, 1.0}}} : fem::Amplitude{}, problem.forces, mesh.num_nodes());
+  if (dynamic) model.dynamics = make_dynamics(scene.dynamics, problem, model.tet_material, *model.elastic);
+  if (model.contact_setup) attach_contact(model, model.contact_setup->geometry, model.contact_setup->options);
+  rebuild_objective(model);
+  model.scales = newton_scales(problem, scene.solver.newton);
+  if (dynamic && scene.dynamics.options.integrator == Integrator::Explicit) check_explicit_mass(model);
+  return model;
+}
+
+contact::ContactGeometry geometry_with_penalty(const scene::ContactSetup& setup, double penalty) {
+  if (!(penalty > 0) || !std::isfinite(penalty))
+    throw InputError(fmt::format("contact penalty {} must be finite and > 0", penalty));
+  contact::ContactGeometry geometry = setup.geometry;
+  for (Index a = 0; a < geometry.penalty.rows(); ++a)
+    for (Index b = 0; b < geometry.penalty.cols(); ++b) {
+      if (!(geometry.penalty(a, b) > 0)) continue;
+      geometry.penalty(a, b) = penalty;
+      check_penalty(setup, a, b, penalty);
+    }
+  return geometry;
+}
+
+void set_contact(Model& model, const ContactChange& change) {
+  if (!model.contact_setup) throw InputError(fmt::format("scene \"{}\" has no contact section", model.name));
+  if (!(change.penalty >= 0) || !std::isfinite(change.penalty))
+    throw InputError(fmt::format("contact penalty {} must be finite and >= 0", change.penalty));
+  if (change.penalty == 0) {
+    detach_contact(model);
+    rebuild_objective(model);
+    return;
+  }
+  const scene::ContactSetup& setup = *model.contact_setup;
+  contact::ContactGeometry geometry = geometry_with_penalty(setup, change.penalty);
+  contact::ContactOptions options = setup.options;
+  options.method = change.method;
+  attach_contact(model, std::move(geometry), options);
+  rebuild_objective(model);
+}
+
+}  // namespace sinew::model

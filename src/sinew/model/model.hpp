@@ -1,0 +1,85 @@
+#pragma once
+/// @file model.hpp
+/// The runnable model of a scene: the problem (meshes, materials, constraints, loads), the
+/// DofMap, the energy terms, the objective Newton minimizes, the scales of the convergence
+/// test, and the dynamics part of a time-dependent analysis. Built by build_model from a
+/// SceneConfig; the command, the studies, the benchmarks and the tests all run it through
+/// solve_model (solve_model.hpp). See docs/architecture.md for the data flow.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sinew/contact/contact_energy.hpp"
+#include "sinew/fem/elastic_energy.hpp"
+#include "sinew/fem/external_force_energy.hpp"
+#include "sinew/fem/problem.hpp"
+#include "sinew/fem/quadratic_energy.hpp"
+#include "sinew/scene/build_contact.hpp"
+#include "sinew/scene/scene_config.hpp"
+#include "sinew/solver/objective.hpp"
+#include "sinew/solver/newton_solver.hpp"
+#include "sinew/solver/solver_config.hpp"
+
+namespace sinew::model {
+
+/// The time-integration part of a dynamic analysis.
+struct Dynamics {
+  solver::DynamicOptions options;
+  std::unique_ptr<BlockSparseMatrix> mass;          ///< M (lumped or consistent), #V node blocks (mass)
+  std::unique_ptr<fem::QuadraticEnergy> inertia;    ///< A = M; null for quasistatic
+  std::unique_ptr<fem::QuadraticEnergy> viscosity;  ///< A = D = mass_damping M + stiffness_damping K0; null without damping
+  double elastic_critical_time_step = 0;            ///< explicit: 2 / ω_max of the elements (time)
+  double contact_critical_time_step = 0;            ///< explicit with contact: of the stiffest penalty spring (time)
+  double critical_time_step = 0;                    ///< explicit: the smaller of the two (time)
+};
+
+struct Model {
+  std::string name;  ///< the scene's name
+  /// Owned on the heap: the energies and the DofMap refer to its arrays, so a Model can move.
+  std::unique_ptr<const fem::Problem> problem;
+  std::unique_ptr<fem::DofMap> dofs;
+  std::vector<material::MaterialPtr> tet_material;  ///< #T, nullptr for rigid tets
+  std::unique_ptr<fem::ElasticEnergy> elastic;
+  std::unique_ptr<fem::ExternalForceEnergy> external;
+  /// The scene's contact input (depths, penalties, body names), kept so that set_contact
+  /// changes the method and penalties without re-meshing or recomputing the depth; none
+  /// without a contact section.
+  std::optional<scene::ContactSetup> contact_setup;
+  std::unique_ptr<contact::ContactEnergy> contact;  ///< null without contact (or with penalty 0)
+  std::optional<Dynamics> dynamics;                 ///< none for a static analysis
+  std::unique_ptr<solver::Objective> objective;     ///< Σ of the terms above, seen through the DofMap
+  solver::StaticSolverOptions solver;               ///< the scene's linear solver, Newton and load stepping
+  /// Characteristic length, reference force and quasi-viscosity per node (solver/newton_solver.hpp).
+  solver::NewtonSetup scales;
+
+  bool is_dynamic() const { return dynamics.has_value(); }
+  /// Names of the contact bodies by their id in the contact geometry (empty without contact).
+  const std::vector<std::string>& contact_body_names() const;
+};
+
+/// Builds the problem (meshing, material depth) and the model of `scene`. Throws InputError
+/// (with the scene path of the culprit) for anything a run would refuse, so `sinew validate`
+/// catches exactly what `sinew run` would: bad meshes, constraints, contact settings, and for
+/// explicit integration a moving part without mass.
+Model build_model(const scene::SceneConfig& scene);
+
+/// A change of the contact settings that keeps the meshes and the material depth.
+struct ContactChange {
+  contact::ContactMethod method = contact::ContactMethod::Area;
+  /// Penalty of every body pair with contact (force / length³); 0 removes the contact term.
+  double penalty = 0;
+};
+
+/// The scene's contact geometry with `penalty` (> 0) on every body pair that has contact.
+/// Throws InputError as set_contact does.
+contact::ContactGeometry geometry_with_penalty(const scene::ContactSetup& setup, double penalty);
+
+/// Replaces the contact term by one with `change` (the pairs the scene has contact on keep it;
+/// explicit integration's critical step is recomputed). Requires a scene with a contact section.
+/// Throws InputError for a negative or non-finite penalty, or one above
+/// scene::kMaxPenaltyOverAutomatic times a pair's automatic penalty.
+void set_contact(Model& model, const ContactChange& change);
+
+}  // namespace sinew::model

@@ -1,0 +1,40 @@
+#include "sinew/solver/newton_direction.hpp"
+
+#include <limits>
+
+namespace sinew::solver {
+
+Direction newton_direction(const SparseMatrix& K, bool fresh_pattern, const VectorX& g, LinearSolver& linear,
+                           double first_shift) {
+  Direction d;
+  if (fresh_pattern) linear.analyze(K);
+  const VectorX diag = K.diagonal().cwiseAbs().cwiseMax(1e-300);
+  double shift = first_shift >= kSmallestShift ? first_shift : 0;
+  SparseMatrix shifted;
+  for (int attempt = 0; attempt < 12; ++attempt) {
+    const SparseMatrix* M = &K;
+    if (shift > 0) {
+      shifted = K;
+      for (int k = 0; k < shifted.outerSize(); ++k) shifted.coeffRef(k, k) += shift * diag[k];
+      M = &shifted;
+    }
+    ++d.factorizations;
+    if (linear.factorize(*M)) {
+      VectorX dq;
+      const LinearSolveStats stats = linear.solve(-g, dq);
+      d.linear_iterations += stats.iterations;
+      if (stats.success && g.dot(dq) < 0) {
+        d.dq = std::move(dq);
+        d.regularization = shift;
+        return d;
+      }
+    }
+    shift = shift == 0 ? kSmallestShift : shift * 10;
+  }
+  // Last resort: diagonally scaled steepest descent.
+  d.dq = -g.cwiseQuotient(diag);
+  d.regularization = std::numeric_limits<double>::infinity();
+  return d;
+}
+
+}  // namespace sinew::solver

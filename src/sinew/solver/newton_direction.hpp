@@ -1,0 +1,31 @@
+#pragma once
+/// @file newton_direction.hpp
+/// The Newton direction dq from K dq = -g, regularized by a growing diagonal shift when K is
+/// not positive definite (docs/solver.md, "Indefinite tangents").
+
+#include "sinew/solver/linear_solver.hpp"
+
+namespace sinew::solver {
+
+struct Direction {
+  VectorX dq;                  ///< #q, a descent direction (g · dq < 0)
+  int linear_iterations = 0;   ///< of the iterative solver, summed over the attempts (0 for direct)
+  int factorizations = 0;      ///< attempts made (each one factorizes K or K + shift diag(K))
+  /// Relative diagonal shift that gave dq (0: none); +inf when every attempt failed and dq is
+  /// diagonally scaled steepest descent.
+  double regularization = 0;
+};
+
+/// Smallest relative diagonal shift tried; below it a shift is no shift.
+inline constexpr double kSmallestShift = 1e-8;
+
+/// Solves K dq = -g (K: #q x #q, g: #q). When K cannot be factorized or the result is not a
+/// descent direction, retries with K + shift * |diag(K)|, the shift growing tenfold from
+/// `first_shift` (0: unshifted first, then kSmallestShift), at most 12 attempts, then falls back
+/// to diagonally scaled steepest descent. Every failed attempt costs a factorization, so callers
+/// pass a hint from the previous iteration when that one needed a shift. `fresh_pattern`: K's
+/// sparsity pattern is new and `linear` must analyze it first.
+Direction newton_direction(const SparseMatrix& K, bool fresh_pattern, const VectorX& g, LinearSolver& linear,
+                           double first_shift);
+
+}  // namespace sinew::solver

@@ -1,0 +1,132 @@
+#include "sinew/solver/stepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sinew::solver {
+
+StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const StepperOptions& options,
+                          const StepperCallbacks& callbacks) {
+  Objective& objective = newton.objective();
+  const double collision_before = objective.collision_seconds();
+  const PhaseTimes times_before = newton.times();
+  StepperResult result;
+  auto finish = [&](StepperResult& r) -> StepperResult& {
+    r.times = newton.times();
+    r.times.forces_and_stiffness -= times_before.forces_and_stiffness;
+    r.times.linear_solve -= times_before.linear_solve;
+    r.times.line_search -= times_before.line_search;
+    r.times.other -= times_before.other;
+    r.times.collision = objective.collision_seconds() - collision_before;
+    if (r.steps == 0) r.min_step = 0;
+    r.last_velocity = scheme.velocity();
+    return r;
+  };
+
+  StepRecord attempt;
+  auto on_iteration = [&](const IterationRecord& it) {
+    if (callbacks.on_iteration) callbacks.on_iteration(attempt, it);
+  };
+
+  fem::State current = scheme.start();
+  const StepRecord start_record;
+  if (options.start == StepperOptions::Start::SolveEquilibrium) {
+    // The start may be deeply interpenetrated (contact pushes it apart): a larger budget.
+    NewtonOptions initial = options.newton;
+    initial.max_iterations = std::max(4 * initial.max_iterations, 100);
+    fem::State unsolved = current;
+    const NewtonResult solved = newton.solve(current, initial, on_iteration);
+    result.newton_iterations += solved.iterations;
+    if (!solved.converged) {
+      result.message = scheme.start_failed(solved.failure);
+      result.last_state = std::move(unsolved);
+      return finish(result);
+    }
+  } else if (callbacks.on_step) {
+    callbacks.on_step(start_record, current, scheme.velocity());
+  }
+  result.last_state = current;
+  if (callbacks.on_segment) callbacks.on_segment(0, start_record, current, scheme.velocity());
+
+  const double segment_length = options.segment_length > 0 ? options.segment_length : options.end;
+  const int segments = std::max(1, static_cast<int>(std::ceil(options.end / segment_length * (1 - 1e-12))));
+  double step = std::min(options.first_step, options.max_step);
+  int failures_in_a_row = 0;  // attempts failed since the last converged step
+  double t = 0;
+  result.min_step = std::numeric_limits<double>::infinity();
+  StepRecord record;
+
+  for (int k = 1; k <= segments; ++k) {
+    const double target = k == segments ? options.end : std::min(options.end, k * segment_length);
+    while (t < target - 1e-12 * segment_length) {
+      double h = std::min(step, target - t);
+      if (target - (t + h) < options.snap_to_segment_end * segment_length) h = target - t;
+      // A large prescribed rotation is taken in several steps (prescribed_turn.hpp).
+      h = scheme.bound_step(t, h, options.min_step);
+      if (h < options.min_step) {
+        result.message = scheme.turn_too_fast(t, options.min_step);
+        result.t = t;
+        return finish(result);
+      }
+      const double t_new = h == target - t ? target : t + h;
+      attempt = StepRecord{};
+      attempt.segment = k;
+      attempt.step = result.steps + 1;
+      attempt.t = t_new;
+      attempt.step_size = h;
+      attempt.cuts = result.cuts;
+
+      fem::State trial = scheme.predict(current, t, t_new, newton);
+      NewtonOptions newton_options = options.newton;
+      const bool snap_attempt =
+          options.snap_through_after_cuts > 0 && failures_in_a_row == options.snap_through_after_cuts;
+      attempt.snap_through = snap_attempt;
+      if (snap_attempt)
+        newton_options.max_iterations = std::max(newton_options.max_iterations, options.snap_through_iterations);
+      const NewtonResult solved = newton.solve(trial, newton_options, on_iteration);
+      result.newton_iterations += solved.iterations;
+      if (solved.converged) {
+        failures_in_a_row = 0;
+        if (snap_attempt) ++result.snap_throughs;
+        scheme.accept(current, trial, h);
+        current = std::move(trial);
+        t = t_new;
+        ++result.steps;
+        result.min_step = std::min(result.min_step, h);
+        result.max_step = std::max(result.max_step, h);
+        record = attempt;
+        record.newton_iterations = solved.iterations;
+        record.residual = solved.residual;
+        record.force_scale = solved.force_scale;
+        record.energy = solved.energy;
+        result.last_state = current;
+        result.t = t;
+        if (callbacks.on_step) callbacks.on_step(record, current, scheme.velocity());
+        const bool easy = solved.iterations <= options.easy_iterations;
+        const bool full = options.growth_rule == StepperOptions::Growth::AfterEasyStep || h >= step * (1 - 1e-12);
+        if (easy && full) step = std::min(step * options.growth, options.max_step);
+        continue;
+      }
+      ++result.cuts;
+      ++failures_in_a_row;
+      attempt.cuts = result.cuts;
+      if (callbacks.on_cut) callbacks.on_cut(attempt, solved.failure);
+      step = h / 2;
+      scheme.reject(current);
+      if (step < options.min_step) {
+        result.message = scheme.step_too_small(t, h, options.min_step, solved.failure);
+        result.t = t;
+        return finish(result);
+      }
+    }
+    result.segments_completed = k;
+    if (callbacks.on_segment) callbacks.on_segment(k, record, current, scheme.velocity());
+  }
+  result.success = true;
+  result.t = t;
+  result.message = scheme.solved(result);
+  return finish(result);
+}
+
+}  // namespace sinew::solver

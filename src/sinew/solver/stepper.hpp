@@ -1,0 +1,118 @@
+#pragma once
+/// @file stepper.hpp
+/// One adaptive stepper for load steps and time steps (paper section 3.2, dissertation Fig. 12
+/// loop 1, section 4.8): a parameter t goes from 0 to T through user-visible segments (load
+/// increments, or output intervals of simulated time); each segment is reached in one or more
+/// steps, each solved by Newton; a step that fails is halved, an easy one lets the next grow.
+/// What differs between load and time stepping (the predictor, the inertia terms, the
+/// wording of messages) is a StepScheme.
+
+#include <functional>
+#include <string>
+
+#include "sinew/solver/newton_solver.hpp"
+
+namespace sinew::solver {
+
+/// One accepted (or attempted) step.
+struct StepRecord {
+  int segment = 0;          ///< user-visible increment or output interval this step belongs to (1-based)
+  int step = 0;             ///< accepted steps so far, this one included
+  double t = 0;             ///< parameter at the end of the step: load parameter lambda, or time
+  double step_size = 0;     ///< its delta t
+  int newton_iterations = 0;
+  double residual = 0;      ///< final |g_q|
+  double force_scale = 0;
+  double energy = 0;
+  int cuts = 0;             ///< step halvings so far (whole run)
+  bool snap_through = false;  ///< attempted with the snap-through Newton budget
+};
+
+struct StepperCallbacks {
+  /// Every Newton iteration; `step` describes the step being attempted.
+  std::function<void(const StepRecord& step, const IterationRecord& iteration)> on_iteration;
+  /// Every accepted step (and the given start state as step 0 when the run does not solve
+  /// for it): positions and nodal velocities (#V x 3; 0 rows in load stepping). Explicit
+  /// integration calls it about 50 times per output interval (and at output times).
+  std::function<void(const StepRecord& step, const fem::State& state, const NodalVectors& velocity)> on_step;
+  /// The start state (segment 0) and the end of every segment.
+  std::function<void(int segment, const StepRecord& step, const fem::State& state, const NodalVectors& velocity)>
+      on_segment;
+  /// A step failed and will be retried smaller.
+  std::function<void(const StepRecord& step, const std::string& why)> on_cut;
+};
+
+/// What every run reports, load or time stepping.
+struct StepperResult {
+  bool success = false;
+  std::string message;          ///< what was solved, or what failed, where, and what to try
+  fem::State last_state;        ///< the last converged state
+  NodalVectors last_velocity;   ///< #V x 3 (time stepping), 0 rows (load stepping)
+  double t = 0;                 ///< parameter reached (lambda, or simulated time)
+  int segments_completed = 0;   ///< increments or output intervals
+  int steps = 0;
+  int newton_iterations = 0;
+  int cuts = 0;
+  int snap_throughs = 0;        ///< steps solved with the snap-through budget
+  double min_step = 0, max_step = 0;  ///< of the accepted steps (t units)
+  PhaseTimes times;
+};
+
+struct StepperOptions {
+  enum class Start {
+    SolveEquilibrium,  ///< Newton at t = 0 first (a larger budget); no step-0 record
+    GivenState         ///< the start state is reported as step 0 as it is
+  };
+  /// Growth after an easy step: always (load stepping), or only after a step that was not
+  /// shortened to land on a segment end (time stepping).
+  enum class Growth { AfterEasyStep, AfterEasyFullStep };
+  double end = 1;             ///< T (> 0)
+  /// Segment k ends at min(T, k segment_length); the last one exactly at T. Default: T.
+  double segment_length = 0;
+  double first_step = 1;      ///< first step size (t units)
+  double max_step = 1;        ///< steps never grow beyond it
+  double min_step = 1e-4;     ///< a cut below this fails the run (t units)
+  double growth = 2;          ///< factor after an easy step
+  int easy_iterations = 4;    ///< Newton iterations at or below which a step is easy
+  /// A step that would end within this fraction of a segment of the segment's end ends there.
+  double snap_to_segment_end = 0;
+  /// After this many failed attempts in a row the next one gets `snap_through_iterations`
+  /// Newton iterations (see LoadSteppingOptions); 0 disables it.
+  int snap_through_after_cuts = 0;
+  int snap_through_iterations = 200;
+  Start start = Start::SolveEquilibrium;
+  Growth growth_rule = Growth::AfterEasyStep;
+  NewtonOptions newton;
+};
+
+/// The part of a step that differs between load stepping and time stepping.
+class StepScheme {
+ public:
+  virtual ~StepScheme() = default;
+  /// The start state at t = 0 (sets the objective up for it).
+  virtual fem::State start() = 0;
+  /// The Newton starting point of a step from `current` (converged at t) to `t_new`, with the
+  /// objective set up for t_new (load parameter, inertia centre, collision structures).
+  virtual fem::State predict(const fem::State& current, double t, double t_new, NewtonSolver& newton) = 0;
+  /// `current` converged at the end of a step of size h from `previous`.
+  virtual void accept(const fem::State& previous, const fem::State& current, double h) = 0;
+  /// A step from `current` failed: undo what predict() set up for the objective.
+  virtual void reject(const fem::State& current) = 0;
+  /// Nodal velocities of the last accepted state (#V x 3), or 0 rows.
+  virtual NodalVectors velocity() const { return {}; }
+  /// Largest step from t not above `h` whose prescribed rotations stay within the per-step
+  /// bound (prescribed_turn.hpp); below `smallest` means none.
+  virtual double bound_step(double t, double h, double smallest) const = 0;
+  /// Messages: why the run stopped.
+  virtual std::string start_failed(const std::string& why) const = 0;
+  virtual std::string turn_too_fast(double t, double smallest) const = 0;
+  virtual std::string step_too_small(double t, double h, double smallest, const std::string& why) const = 0;
+  virtual std::string solved(const StepperResult& result) const = 0;
+};
+
+/// Runs `scheme` from 0 to options.end with `newton`. Sets result.times.collision to the
+/// objective's collision time over the run.
+StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const StepperOptions& options,
+                          const StepperCallbacks& callbacks = {});
+
+}  // namespace sinew::solver

@@ -1,0 +1,105 @@
+// NewtonSolver on its own: convergence to the closed form with a quadratic rate, the
+// iteration records, the budget, an illegal start, and the reuse of its factorization.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "sinew/solver/newton_solver.hpp"
+#include "support/solver_rig.hpp"
+
+using namespace sinew;
+namespace st = sinew::testing;
+
+namespace {
+
+constexpr double kC1 = 0.5, kC2 = 0.2, kA = 1.5, kStretch = 1.2;
+
+const solver::NewtonSetup kUnitCube{.characteristic_length = std::sqrt(3.0), .reference_force = 1.0};
+
+/// The uniaxial rig at lambda = 1 with the pulled face moved and everything else at rest.
+struct Started {
+  st::SolverRig rig{st::uniaxial_problem(kStretch, kC1, kC2, kA)};
+  fem::State state;
+  Started() {
+    state = rig.dofs->initial_state(1.0);
+    rig.objective->set_load_parameter(1.0);
+    rig.objective->begin_step(state);
+  }
+};
+
+solver::NewtonOptions tight() {
+  solver::NewtonOptions o;
+  o.residual_tolerance = 1e-12;
+  o.increment_tolerance = 1e-12;
+  return o;
+}
+
+}  // namespace
+
+TEST(NewtonSolver, ConvergesQuadraticallyToTheClosedFormAndRecordsEveryIteration) {
+  Started s;
+  solver::NewtonSolver newton(*s.rig.objective, {}, kUnitCube);
+  std::vector<solver::IterationRecord> records;
+  const solver::NewtonResult result = newton.solve(s.state, tight(), [&](const auto& it) { records.push_back(it); });
+  ASSERT_TRUE(result.converged) << result.failure;
+  ASSERT_EQ(records.size(), static_cast<std::size_t>(result.iterations + 1));
+  for (std::size_t k = 0; k < records.size(); ++k) EXPECT_EQ(records[k].iteration, static_cast<int>(k));
+  EXPECT_EQ(records.back().residual, result.residual);
+  // Full steps near the solution, and the residual at least squares (rate 2) once small.
+  ASSERT_GE(records.size(), 4u);
+  const std::size_t n = records.size();
+  EXPECT_EQ(records[n - 1].step_length, 1.0);
+  const double r1 = records[n - 3].residual, r2 = records[n - 2].residual;
+  if (r1 < 1e-2 && r2 > 1e-14) {
+    EXPECT_LT(r2, 10 * r1 * r1) << "not quadratic";
+  }
+  // The closed form: F = diag(l, s, s).
+  const double lateral = st::mooney_rivlin_uniaxial(kC1, kC2, kA, kStretch).first;
+  const auto& mesh = s.rig.problem.mesh;
+  for (Index v = 0; v < mesh.num_nodes(); ++v) {
+    const Vector3 X = mesh.rest.row(v).transpose();
+    EXPECT_LT((s.state.x.row(v).transpose() - Vector3(kStretch * X.x(), lateral * X.y(), lateral * X.z())).norm(), 1e-9);
+  }
+  EXPECT_GT(newton.times().linear_solve, 0.0);
+  EXPECT_GT(newton.times().forces_and_stiffness, 0.0);
+}
+
+TEST(NewtonSolver, StopsAtItsIterationBudgetWithTheLastIterate) {
+  Started s;
+  solver::NewtonSolver newton(*s.rig.objective, {}, kUnitCube);
+  solver::NewtonOptions one = tight();
+  one.max_iterations = 1;
+  const fem::State start = s.state;
+  const solver::NewtonResult result = newton.solve(s.state, one);
+  EXPECT_FALSE(result.converged);
+  EXPECT_EQ(result.iterations, 1);
+  EXPECT_NE(result.failure.find("no convergence in 1 Newton iterations"), std::string::npos) << result.failure;
+  EXPECT_GT((s.state.x - start.x).norm(), 0.0) << "the state holds the last iterate";
+}
+
+TEST(NewtonSolver, AnIllegalStartFailsWithoutAStep) {
+  Started s;
+  solver::NewtonSolver newton(*s.rig.objective, {}, kUnitCube);
+  s.state.x *= -1.0;  // every tet inverted
+  const solver::NewtonResult result = newton.solve(s.state, tight());
+  EXPECT_FALSE(result.converged);
+  EXPECT_EQ(result.iterations, 0);
+  EXPECT_NE(result.failure.find("illegal"), std::string::npos) << result.failure;
+}
+
+TEST(NewtonSolver, TheLastFactorizationSolvesTheTangentSystem) {
+  Started s;
+  solver::NewtonSolver newton(*s.rig.objective, {}, kUnitCube);
+  VectorX x;
+  EXPECT_FALSE(newton.solve_with_last_factorization(VectorX::Ones(s.rig.dofs->num_dofs()), x))
+      << "no factorization yet";
+  const NodalVectors g = s.rig.objective->full_gradient(s.state);
+  ASSERT_TRUE(newton.ensure_factorization(s.state, g));
+  fem::SparseMatrix K;
+  s.rig.objective->hessian(s.state, g, VectorX(), K);
+  const VectorX b = VectorX::LinSpaced(K.rows(), -1.0, 1.0);
+  ASSERT_TRUE(newton.solve_with_last_factorization(b, x));
+  EXPECT_LT((K * x - b).norm(), 1e-10 * b.norm());
+}
