@@ -4,6 +4,7 @@
 
 #include "sinew/core/error.hpp"
 #include "sinew/fem/dof_map.hpp"
+#include "sinew/fem/hessian_reduction.hpp"
 #include "sinew/fem/elastic_energy.hpp"
 #include "sinew/fem/external_force_energy.hpp"
 #include "sinew/fem/reactions.hpp"
@@ -133,10 +134,11 @@ TEST_P(DofMapDerivatives, ReducedGradientAndHessianMatchFiniteDifferences) {
   BlockSparseMatrix H;
   H.set_pattern(f.problem.mesh.num_nodes(), pairs);
   f.elastic->bind_pattern(H);
-  f.dofs->bind_pattern(H);
+  fem::HessianReduction reduction(*f.dofs);
+  reduction.bind(H);
   f.elastic->add_hessian(base.x, H);
   fem::SparseMatrix K;
-  f.dofs->reduce_hessian(base, H, g_full, VectorX(), K);
+  reduction.reduce(base, H, g_full, VectorX(), K);
   const MatrixX dense = MatrixX(K);
 
   // Second differences of the energy through the step map.

@@ -4,32 +4,21 @@
 /// held in one or two planes (2 or 1 DOF), prescribed nodes and members of fixed or
 /// prescribed rigid bodies (0 DOFs), and members of free rigid bodies (6 DOFs per body:
 /// translation, then an incremental rotation vector about the body's current center).
-/// It reduces full-space gradients and Hessians (#V x 3, 3x3 node blocks) to q-space,
-/// including the second-order term of the rotation map.
+/// It reduces full-space gradients (#V x 3) to q-space; HessianReduction (hessian_reduction.hpp)
+/// does the same for Hessians with the q-space pattern it caches.
 
-#include <Eigen/SparseCore>
+#include <cstdint>
 #include <vector>
 
-#include "sinew/core/block_sparse_matrix.hpp"
 #include "sinew/core/energy.hpp"
+#include "sinew/core/sparse_matrix.hpp"
 #include "sinew/fem/problem.hpp"
+#include "sinew/fem/state.hpp"
 
 namespace sinew::fem {
 
-/// Pose of one rigid body: x = R (X - center) + center + t.
-struct RigidPose {
-  Matrix3 R = Matrix3::Identity();
-  Vector3 t = Vector3::Zero();
-};
-
-/// Everything that changes during a solve.
-struct State {
-  Positions x;                   ///< #V x 3 current positions, consistent with all constraints
-  std::vector<RigidPose> rigid;  ///< one per Problem::rigid_bodies
-  double lambda = 0;             ///< load parameter (or time) the constraints were synced to
-};
-
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+/// The solvers' matrix type, here for the callers that name it fem::SparseMatrix.
+using sinew::SparseMatrix;
 
 class DofMap {
  public:
@@ -41,6 +30,16 @@ class DofMap {
 
   Index num_dofs() const { return num_dofs_; }
   NodeKind kind(Index node) const { return node_[static_cast<std::size_t>(node)].kind; }
+  /// First q index of a Free or Planar node, or of the free rigid body a member belongs to.
+  Index first_dof(Index node) const { return node_[static_cast<std::size_t>(node)].dof; }
+  /// Unknowns of a node: 3 Free, 1-2 Planar, 0 Prescribed or member of a fixed/prescribed rigid
+  /// body, 6 member of a free rigid body (the body's).
+  int num_node_dofs(Index node) const { return node_[static_cast<std::size_t>(node)].ndof; }
+  /// Columns of dx_a/dq (3 x num_node_dofs(a)) at the state.
+  Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6> node_jacobian(const State& state, Index a) const;
+  std::size_t num_rigid_bodies() const { return rigid_.size(); }
+  /// First q index of free rigid body r (translation, then rotation vector), -1 when not free.
+  Index rigid_first_dof(std::size_t r) const { return rigid_[r].dof; }
   /// Rest center of rigid body r (mean of its nodes).
   const Vector3& rigid_center(std::size_t r) const { return rigid_[r].center; }
   const std::vector<Index>& rigid_members(std::size_t r) const { return rigid_[r].members; }
@@ -57,14 +56,6 @@ class DofMap {
 
   /// q-space gradient J^T g (#dofs) of a full-space gradient g (#V x 3).
   VectorX reduce_gradient(const State& state, const NodalVectors& g) const;
-
-  /// Builds the q-space pattern for H's pattern (call when H.pattern_version() changes).
-  void bind_pattern(const BlockSparseMatrix& H);
-  /// K = J^T H J + (rotation second-order terms from g) + diag(viscosity) in q-space; K keeps
-  /// the same sparsity pattern between calls (values overwritten). `viscosity`: per node (#V),
-  /// or empty.
-  void reduce_hessian(const State& state, const BlockSparseMatrix& H, const NodalVectors& g,
-                      const VectorX& node_viscosity, SparseMatrix& K) const;
 
   /// base moved by alpha * dq (dq: #dofs); lambda unchanged.
   State apply_step(const State& base, const VectorX& dq, double alpha) const;
@@ -87,8 +78,6 @@ class DofMap {
     std::vector<Index> members;
     Index dof = -1;
   };
-  /// Columns of dx_a/dq (3 x ndof) at the state.
-  Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6> node_jacobian(const State& state, Index a) const;
   void place_rigid_members(State& state, std::size_t r) const;
 
   const Problem& problem_;
@@ -96,12 +85,6 @@ class DofMap {
   std::vector<RigidInfo> rigid_;
   Index num_dofs_ = 0;
 
-  // reduced pattern
-  std::uint64_t bound_version_ = 0;
-  SparseMatrix pattern_;
-  std::vector<Index> block_target_offset_;  // per H block, into targets_
-  std::vector<Index> targets_;              // value indices into K, row-major per block
-  std::vector<Index> diagonal_target_;      // per dof, value index of (i, i)
 };
 
 }  // namespace sinew::fem

@@ -6,6 +6,7 @@
 
 #include "sinew/contact/contact_time_step.hpp"
 #include "sinew/core/error.hpp"
+#include "sinew/fem/hessian_reduction.hpp"
 #include "sinew/fem/mass_matrix.hpp"
 #include "sinew/fem/stable_time_step.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
@@ -78,12 +79,12 @@ Dynamics make_dynamics(const scene::DynamicsConfig& config, const fem::Problem& 
 
 /// Explicit integration divides by the reduced mass M_q = Jᵀ M J: every unknown needs mass.
 void check_explicit_mass(const Model& model) {
-  fem::DofMap mass_dofs = *model.dofs;
+  fem::HessianReduction reduction(*model.dofs);
   const BlockSparseMatrix& M = *model.dynamics->mass;
-  mass_dofs.bind_pattern(M);
+  reduction.bind(M);
   fem::SparseMatrix Mq;
-  const fem::State rest = mass_dofs.initial_state(0.0);
-  mass_dofs.reduce_hessian(rest, M, NodalVectors::Zero(M.num_nodes(), 3), VectorX(), Mq);
+  const fem::State rest = model.dofs->initial_state(0.0);
+  reduction.reduce(rest, M, NodalVectors::Zero(M.num_nodes(), 3), VectorX(), Mq);
   if (Mq.rows() > 0 && !(Mq.diagonal().minCoeff() > 0))
     throw InputError(
         "dynamics: explicit integration: a moving part has no mass (a region or rigid body of density 0?): give every "

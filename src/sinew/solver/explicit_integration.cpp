@@ -8,6 +8,7 @@
 
 #include "sinew/core/error.hpp"
 #include "sinew/core/stopwatch.hpp"
+#include "sinew/fem/hessian_reduction.hpp"
 #include "sinew/solver/linear_solver.hpp"
 
 namespace sinew::solver {
@@ -38,18 +39,17 @@ StepperResult solve_explicit(Objective& objective, const DynamicTerms& terms, co
   const double T = options.end_time;
   const double dt = options.explicit_safety * setup.critical_time_step;
 
-  // Reduced mass M_q = Jᵀ M J with its own copy of the DofMap (the objective's one is bound to
-  // the objective's Hessian pattern).
-  fem::DofMap mass_dofs = objective.dofs();
+  // Reduced mass M_q = Jᵀ M J with its own q-space pattern (M's, not the objective's Hessian's).
+  fem::HessianReduction mass_reduction(objective.dofs());
   const BlockSparseMatrix& M = terms.inertia->matrix();
-  mass_dofs.bind_pattern(M);
+  mass_reduction.bind(M);
   fem::SparseMatrix Mq;
   auto linear = make_linear_solver(LinearSolverOptions{});
   bool diagonal = false;
   VectorX inverse_diagonal;
   const NodalVectors no_gradient = NodalVectors::Zero(M.num_nodes(), 3);
   auto factor_mass = [&](const fem::State& state, bool first) {
-    mass_dofs.reduce_hessian(state, M, no_gradient, VectorX(), Mq);
+    mass_reduction.reduce(state, M, no_gradient, VectorX(), Mq);
     diagonal = Mq.nonZeros() == Mq.rows();
     if (diagonal) {
       inverse_diagonal = Mq.diagonal().cwiseInverse();

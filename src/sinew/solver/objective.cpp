@@ -7,8 +7,8 @@
 
 namespace sinew::solver {
 
-Objective::Objective(fem::DofMap& dofs, std::vector<Energy*> terms, Index num_nodes)
-    : dofs_(dofs), terms_(std::move(terms)), num_nodes_(num_nodes) {}
+Objective::Objective(const fem::DofMap& dofs, std::vector<Energy*> terms, Index num_nodes)
+    : dofs_(dofs), reduction_(dofs), terms_(std::move(terms)), num_nodes_(num_nodes) {}
 
 void Objective::set_load_parameter(double lambda) {
   for (auto* term : terms_) term->set_load_parameter(lambda);
@@ -80,7 +80,7 @@ void Objective::rebuild_pattern() {
   for (auto* term : terms_) term->hessian_pattern(pairs);
   H_.set_pattern(num_nodes_, std::move(pairs));
   for (auto* term : terms_) term->bind_pattern(H_);
-  dofs_.bind_pattern(H_);
+  reduction_.bind(H_);
   pattern_ready_ = true;
   pattern_revision_ = pattern_revisions();
 }
@@ -98,7 +98,7 @@ bool Objective::hessian(const fem::State& state, const NodalVectors& full_gradie
     if (term->has_hessian()) term->add_hessian(state.x, H_);
   const auto nnz_before = K.nonZeros();
   const auto rows_before = K.rows();
-  dofs_.reduce_hessian(state, H_, full_gradient, node_viscosity, K);
+  reduction_.reduce(state, H_, full_gradient, node_viscosity, K);
   return fresh || K.nonZeros() != nnz_before || K.rows() != rows_before;
 }
 

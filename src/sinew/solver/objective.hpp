@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sinew/fem/dof_map.hpp"
+#include "sinew/fem/hessian_reduction.hpp"
 #include "sinew/core/energy.hpp"
 
 namespace sinew::solver {
@@ -13,7 +14,7 @@ namespace sinew::solver {
 class Objective {
  public:
   /// `terms` are not owned and must outlive the objective.
-  Objective(fem::DofMap& dofs, std::vector<Energy*> terms, Index num_nodes);
+  Objective(const fem::DofMap& dofs, std::vector<Energy*> terms, Index num_nodes);
 
   void set_load_parameter(double lambda);
   /// A load or time step starts at `state`: terms rebuild their acceleration structures.
@@ -42,7 +43,8 @@ class Objective {
   void update_terms(const fem::State& state);
   std::uint64_t pattern_revisions() const;
   std::uint64_t pattern_revision_ = 0;
-  fem::DofMap& dofs_;
+  const fem::DofMap& dofs_;
+  fem::HessianReduction reduction_;  ///< q-space pattern of H_
   std::vector<Energy*> terms_;
   Index num_nodes_;
   BlockSparseMatrix H_;
