@@ -42,9 +42,10 @@ PairSet brute_force_pairs(const ContactGeometry& g, const Positions& x, ContactM
       for (int k = 0; k < 4; ++k) depth = std::max(depth, g.depth[g.tets(t, k)]);
       if (depth == 0) continue;
       const PairGeometry pg = pair_geometry(g, x, f, t);
-      const bool hit = method == ContactMethod::Area
-                           ? tet_crosses_triangle_plane(pg) && collision::clip_triangle_tet(pg.triangle, pg.tet).count >= 3
-                           : collision::triangle_vertices_in_tet(pg.triangle, pg.tet).count > 0;
+      const bool hit =
+          method == ContactMethod::Area
+              ? tet_crosses_triangle_plane(pg) && collision::clip_triangle_tet(pg.triangle, pg.tet).count >= 3
+              : collision::triangle_vertices_in_tet(pg.triangle, pg.tet).count > 0;
       if (hit) out.emplace(f, t);
     }
   return out;
@@ -137,7 +138,8 @@ TEST_P(CollisionSetMethods, MoreCandidatesThanTheCapOverflowWithoutPairs) {
   ASSERT_FALSE(roomy.overflowed());
   const auto candidates = static_cast<std::size_t>(roomy.times().candidates);
   ASSERT_GT(candidates, 20u);
-  EXPECT_EQ(roomy.candidate_cap(), std::max<std::size_t>(100000, 20 * static_cast<std::size_t>(boxes.geometry.tets.rows())));
+  const auto tets = static_cast<std::size_t>(boxes.geometry.tets.rows());
+  EXPECT_EQ(roomy.candidate_cap(), std::max<std::size_t>(100000, 20 * tets));  // automatic
 
   CollisionSet at_cap(boxes.geometry, GetParam(), candidates);
   at_cap.update(boxes.x);

@@ -147,7 +147,8 @@ std::vector<std::pair<Index, Index>> CollisionSet::pair_indices() const {
 
 void CollisionSet::append_pattern(std::vector<std::pair<Index, Index>>& blocks) const {
   blocks.reserve(blocks.size() + pattern_.size());
-  for (const std::uint64_t k : pattern_) blocks.emplace_back(static_cast<Index>(k >> 32), static_cast<Index>(k & 0xffffffffu));
+  for (const std::uint64_t k : pattern_)
+    blocks.emplace_back(static_cast<Index>(k >> 32), static_cast<Index>(k & 0xffffffffu));
 }
 
 }  // namespace sinew::contact

@@ -65,7 +65,8 @@ void ContactEnergy::add_gradient(const Positions& x, NodalVectors& grad) const {
   const auto& pairs = collisions_.pairs();
   std::vector<PairVector> gradients(pairs.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 64), [&](const auto& range) {
-    for (std::size_t k = range.begin(); k != range.end(); ++k) gradients[k] = pair_energy_gradient(collisions_, pairs[k], x);
+    for (std::size_t k = range.begin(); k != range.end(); ++k)
+      gradients[k] = pair_energy_gradient(collisions_, pairs[k], x);
   });
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     const auto nodes = collisions_.nodes(pairs[k]);
