@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "run_scene.hpp"
+#include "sinew/contact/contact_report.hpp"
 #include "sinew/io/output_directory.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/core/log.hpp"
@@ -96,7 +97,7 @@ void write_force_sweep(const model::Model& model, const ConvergenceStudyOptions&
       for (Index v = body->first_node; v < body->first_node + body->num_nodes; ++v)
         x.row(v) += (o.sweep_from + s * o.sweep_translation).transpose();
       energy.begin_step(x);
-      const contact::ContactStatistics stats = energy.statistics(x);
+      const contact::ContactReport stats = contact::contact_report(energy, x);
       Vector3 total = Vector3::Zero();
       for (Index v = body->first_node; v < body->first_node + body->num_nodes; ++v) {
         const Vector3 f = stats.nodal_force.row(v).transpose();
@@ -178,7 +179,7 @@ ConvergenceStudyReport run_convergence_study(const scene::SceneConfig& scene, co
       run.cuts = result.result.cuts;
       const fem::State& last = result.result.last_state;
       measure.begin_step(last.x);
-      run.max_penetration = measure.statistics(last.x).max_penetration;
+      run.max_penetration = contact::contact_report(measure, last.x).max_penetration;
       // A run that never needed a Newton iteration started in equilibrium (within the solver's
       // tolerance): there is nothing to reduce.
       run.converged = run.solved && (run.newton_iterations == 0 || run.final_residual <= o.tolerance * run.largest_residual);

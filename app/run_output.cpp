@@ -77,9 +77,9 @@ void RunOutput::write_rigid_row(std::vector<io::CsvTable::Cell> row, const fem::
     rigid_->append(row);
 }
 
-std::optional<contact::ContactStatistics> RunOutput::contact_statistics(const fem::State& state) const {
+std::optional<contact::ContactReport> RunOutput::contact_statistics(const fem::State& state) const {
   if (!model_.contact) return std::nullopt;
-  return model_.contact->statistics(state.x);
+  return contact::contact_report(*model_.contact, state.x);
 }
 
 void RunOutput::write_step(const solver::StepRecord& step, const fem::State& state) {
@@ -93,7 +93,7 @@ void RunOutput::write_step(const solver::StepRecord& step, const fem::State& sta
 }
 
 DynamicEnergies RunOutput::energies(const fem::State& state, const NodalVectors& velocity,
-                                    const contact::ContactStatistics* contact) const {
+                                    const contact::ContactReport* contact) const {
   DynamicEnergies e;
   const VectorX v = velocity.reshaped<Eigen::RowMajor>();  // node-major x, y, z
   e.kinetic = 0.5 * v.dot(model_.dynamics->mass->multiply(v));
@@ -128,25 +128,24 @@ void RunOutput::write_output(int output, double time, const fem::State& state, c
 }
 
 void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State& state,
-                          const contact::ContactStatistics* contact, bool flush) {
+                          const contact::ContactReport* contact, bool flush) {
   const auto gradient = model_.objective->full_gradient(state);
   for (const auto& reaction : fem::compute_reactions(problem_, *model_.dofs, state, gradient)) {
     for (int k = 0; k < 3; ++k) row.emplace_back(reaction.force[k]);
     for (int k = 0; k < 3; ++k) row.emplace_back(reaction.moment[k]);
   }
   if (contact) {
-    const contact::ContactStatistics& c = *contact;
+    const contact::ContactReport& c = *contact;
     row.emplace_back(static_cast<long long>(c.pairs));
     row.emplace_back(c.area);
     row.emplace_back(c.max_penetration);
     row.emplace_back(c.mean_penetration);
     if (!model_.is_dynamic()) row.emplace_back(c.energy);
-    const Index bodies = model_.contact->num_bodies();
     for (const auto& [a, b] : contact_columns_) {
-      const Vector3& f = c.body_pair_force[static_cast<std::size_t>(a * bodies + b)];
       if (a == b) {
-        row.emplace_back(f.x());
+        row.emplace_back(c.self_contact_force_magnitude[a]);
       } else {
+        const Vector3& f = c.force_between(a, b);
         for (int k = 0; k < 3; ++k) row.emplace_back(f[k]);
       }
     }
@@ -186,7 +185,7 @@ io::VtuData RunOutput::vtu_data(const fem::State& state) const {
   for (Index t = 0; t < problem_.mesh.num_tets(); ++t) rigid[t] = model_.tet_material[t] ? 0 : 1;
   data.int_cell_fields.emplace_back("rigid", rigid);
   if (model_.contact) {
-    const contact::ContactStatistics c = model_.contact->statistics(state.x);
+    const contact::ContactReport c = contact::contact_report(*model_.contact, state.x);
     data.point_fields.push_back({"material_depth", MatrixX(model_.contact->geometry().depth)});
     data.point_fields.push_back({"contact_force", MatrixX(c.nodal_force)});
     data.point_fields.push_back({"contact_pressure", MatrixX(c.nodal_pressure)});

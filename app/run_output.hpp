@@ -21,6 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sinew/contact/contact_report.hpp"
 #include "sinew/fem/problem.hpp"
 #include "sinew/io/csv.hpp"
 #include "sinew/io/vtu.hpp"
@@ -55,9 +56,9 @@ class RunOutput {
   void write_time_step(const solver::StepRecord& step, const fem::State& state, const NodalVectors& velocity);
   void write_output(int output, double time, const fem::State& state, const NodalVectors& velocity);
   /// Kinetic, elastic and gravitational energy of a state; the contact energy is taken from
-  /// `contact` (statistics of the same state) when the model has contact.
+  /// `contact` (the contact report of the same state) when the model has contact.
   DynamicEnergies energies(const fem::State& state, const NodalVectors& velocity,
-                           const contact::ContactStatistics* contact) const;
+                           const contact::ContactReport* contact) const;
   /// summary.json of a finished run, solved or stopped (keys of a static or a dynamic analysis).
   void write_summary(const solver::StepperResult& result, double wall_seconds, const std::string& scene_name);
   /// summary.json of a run stopped by something other than the solve (`status`: "output_error",
@@ -77,12 +78,13 @@ class RunOutput {
   void flush_tables() const;
   /// Adds the mesh sizes and the time per phase to `j` and writes summary.json.
   void finish_summary(nlohmann::json& j, double wall_seconds, const solver::PhaseTimes& times) const;
-  /// Contact figures of `state` (one collision update and energy evaluation), none without contact.
-  std::optional<contact::ContactStatistics> contact_statistics(const fem::State& state) const;
+  /// Contact figures of `state` (contact::contact_report; the model's contact energy is not
+  /// changed), none without contact.
+  std::optional<contact::ContactReport> contact_statistics(const fem::State& state) const;
   /// Adds a steps.csv row with the reactions and the contact figures `contact` (of the same
   /// state); `flush` rewrites the file now.
   void write_row(std::vector<io::CsvTable::Cell> row, const fem::State& state,
-                 const contact::ContactStatistics* contact, bool flush = true);
+                 const contact::ContactReport* contact, bool flush = true);
   /// Adds a rigid_bodies.csv row: `row` (step, increment or time, ...) then, per rigid body, the
   /// current position of its reference point (the mean of its nodes at rest) and its rotation
   /// (vector, radians; angle, degrees).

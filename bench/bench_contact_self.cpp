@@ -44,6 +44,7 @@
 
 #include "sinew/collision/material_depth.hpp"
 #include "sinew/contact/contact_energy.hpp"
+#include "sinew/contact/contact_report.hpp"
 #include "sinew/fem/dof_map.hpp"
 #include "sinew/fem/elastic_energy.hpp"
 #include "sinew/fem/problem.hpp"
@@ -279,7 +280,7 @@ struct RunInfo {
   int iterations = 0;
   Index dofs = 0, k_nonzeros = 0, elastic_blocks = 0, contact_blocks = 0;
   double build_seconds = 0;  ///< begin_step: BVH build + first update
-  contact::ContactStatistics stats;
+  contact::ContactReport stats;
 };
 
 std::map<std::string, RunInfo>& results() {
@@ -374,7 +375,7 @@ void BM_SelfContactNewtonIteration(benchmark::State& state, contact::ContactMeth
     objective.begin_step(st);
     info.build_seconds = seconds_since(t0);
   }
-  info.stats = contact.statistics(sc.x0);
+  info.stats = contact::contact_report(contact, sc.x0);
 
   // Warm-up iteration at x0: builds the Hessian pattern and CHOLMOD's analysis.
   fem::SparseMatrix K;

@@ -1,9 +1,9 @@
-// Evidence for the contact energy of GUIDE.md section 3 at the level of ContactEnergy: the force
-// along a sweep of one body through another is continuous for the area method (its largest jump
-// between neighbouring samples shrinks with the spacing) and not for point collocation; the
-// energy is continuous; self-contact of a bent bar; zero depths and zero penalties; the
-// statistics against independent computations; the bookkeeping contract (pattern revisions,
-// missing Hessian blocks, stale positions).
+// Evidence for the material-depth contact energy (docs/theory.md) at the level of
+// ContactEnergy: the force along a sweep of one body through another is continuous for the area
+// method (its largest jump between neighbouring samples shrinks with the spacing) and not for
+// point collocation; the energy is continuous; self-contact of a bent bar; zero depths and zero
+// penalties; the contact report against independent computations; the bookkeeping contract
+// (pattern revisions, missing Hessian blocks, stale positions).
 
 #include <gtest/gtest.h>
 
@@ -22,6 +22,7 @@
 #include "sinew/collision/material_depth.hpp"
 #include "sinew/collision/polygon_quadrature.hpp"
 #include "sinew/contact/contact_energy.hpp"
+#include "sinew/contact/contact_report.hpp"
 #include "support/box_mesh.hpp"
 #include "support/contact_fixtures.hpp"
 #include "support/fd_check.hpp"
@@ -457,7 +458,7 @@ TEST_P(ContactMethods, CollapsedSurfaceTriangleGivesFiniteValues) {
   EXPECT_GT(value, 0);
   EXPECT_TRUE(gradient_at(energy, x).allFinite());
   EXPECT_TRUE(hessian_at(energy, x).allFinite());
-  EXPECT_TRUE(std::isfinite(energy.statistics(x).area));
+  EXPECT_TRUE(std::isfinite(contact_report(energy, x).area));
 }
 
 TEST_P(ContactMethods, ZeroPenaltyBetweenTwoBodiesMeansNoPairsBetweenThem) {
@@ -494,7 +495,9 @@ TEST_P(ContactMethods, StatisticsAgreeWithIndependentComputations) {
   const auto& g = boxes.geometry;
   const Positions& x = boxes.x;
   ContactEnergy energy(g, {method, PairHessian::GaussNewton});
-  const ContactStatistics s = energy.statistics(x);
+  const ContactReport s = contact_report(energy, x);  // the energy is not updated by the report
+  EXPECT_TRUE(energy.active_pairs().empty());
+  energy.update(x);
   const auto pairs = energy.active_pairs();
   ASSERT_GT(pairs.size(), 10u);
   EXPECT_EQ(s.pairs, static_cast<Index>(pairs.size()));
@@ -553,8 +556,10 @@ TEST_P(ContactMethods, StatisticsAgreeWithIndependentComputations) {
   EXPECT_LT((on0 + sum1).norm(), 1e-12 * on0.norm());
   EXPECT_LT((on0 - sum0).norm(), 1e-12 * on0.norm());
   EXPECT_EQ(s.body_pair_force[1 * 2 + 0].norm(), 0.0);  // only i < j is filled
-  EXPECT_EQ(s.body_pair_force[0].norm(), 0.0);           // no self-contact here
+  EXPECT_EQ(s.body_pair_force[0].norm(), 0.0);           // diagonal unused
   EXPECT_EQ(s.body_pair_force[3].norm(), 0.0);
+  ASSERT_EQ(s.self_contact_force_magnitude.size(), 2);
+  EXPECT_EQ(s.self_contact_force_magnitude.norm(), 0.0);  // no self-contact here
   // Pressure is non-negative and positive somewhere.
   EXPECT_GE(s.nodal_pressure.minCoeff(), 0.0);
   EXPECT_GT(s.nodal_pressure.maxCoeff(), 0.0);
@@ -563,7 +568,7 @@ TEST_P(ContactMethods, StatisticsAgreeWithIndependentComputations) {
 TEST_P(ContactMethods, StatisticsWithoutContactAreZero) {
   const auto boxes = st::two_boxes(2, Vector3(3, 0, 0), 0.4, 7.0);
   ContactEnergy energy(boxes.geometry, {GetParam(), PairHessian::GaussNewton});
-  const ContactStatistics s = energy.statistics(boxes.x);
+  const ContactReport s = contact_report(energy, boxes.x);
   EXPECT_EQ(s.pairs, 0);
   EXPECT_EQ(s.area, 0.0);
   EXPECT_EQ(s.energy, 0.0);
@@ -571,6 +576,7 @@ TEST_P(ContactMethods, StatisticsWithoutContactAreZero) {
   EXPECT_EQ(s.mean_penetration, 0.0);
   EXPECT_EQ(s.nodal_force.norm(), 0.0);
   for (const Vector3& f : s.body_pair_force) EXPECT_EQ(f.norm(), 0.0);
+  EXPECT_EQ(s.self_contact_force_magnitude.norm(), 0.0);
 }
 
 // ---------------------------------------------------------------------------------------------

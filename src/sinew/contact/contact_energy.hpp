@@ -8,148 +8,77 @@
 /// (self-contact); pairs that share a node are skipped. It sees only positions, connectivity,
 /// nodal depths and penalties, never the finite element model.
 ///
-/// Collision detection: an AabbTree over the tets is built by begin_step() and refit by
-/// update() at every new configuration; each surface triangle is queried against it, the
-/// candidates clipped (triangle ∩ tet) and the non-empty ones kept as the active pairs.
-/// The Hessian pattern is the union of the node blocks of every pair active since the term
-/// was created; pattern_revision() grows when new blocks appear.
+/// ContactEnergy is a thin adapter of the Energy interface over a CollisionSet (the pairs, the
+/// Hessian pattern union and its revision; collision_set.hpp) and the PairIntegrator of the
+/// method (pair_integrator.hpp). Figures for output come from contact_report (contact_report.hpp),
+/// which does not change the energy.
 ///
 /// Units: lengths L, depths L, penalties ε in force / L³ (stress per length: a penetration g
-/// meets a pressure of about ε g), energy in force × L.
+/// meets a pressure of about ε g), energy in force × L, gradient in force.
 
-#include <algorithm>
 #include <cstdint>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
-#include "sinew/collision/aabb_tree.hpp"
-#include "sinew/collision/clip_triangle_tet.hpp"
-#include "sinew/contact/pair_integral.hpp"
+#include "sinew/contact/collision_set.hpp"
+#include "sinew/contact/contact_geometry.hpp"
 #include "sinew/core/energy.hpp"
 
 namespace sinew::contact {
 
-enum class ContactMethod {
-  Area,  ///< exact integral over triangle ∩ tet (the default; continuous forces)
-  Point  ///< the dissertation's point collocation at triangle vertices (baseline)
-};
-
-/// What takes part in contact, as plain arrays over the global node numbering.
-struct ContactGeometry {
-  Triangles surface;          ///< #F x 3 contact-surface triangles, outward-oriented, every body
-  IndexVector surface_body;   ///< #F: body of each surface triangle (0 .. #B-1)
-  Tets tets;                  ///< #T x 4 tets that can be penetrated, every body
-  IndexVector tet_body;       ///< #T: body of each tet
-  VectorX depth;              ///< #V: material depth per node (L), >= 0
-  MatrixX penalty;            ///< #B x #B symmetric: ε per pair of bodies (force / L³); 0 = off
-  /// Optional factors on the pair penalty, per surface triangle (#F) and per tet (#T), > 0;
-  /// empty means 1. A (triangle, tet) pair uses penalty(bodies) x min(triangle's, tet's): the
-  /// softer part governs, so e.g. two rigid parts can meet stiffly while soft tissue against
-  /// either keeps the body pair's penalty.
-  VectorX surface_penalty_scale;
-  VectorX tet_penalty_scale;
-};
-
-struct ContactOptions {
-  ContactMethod method = ContactMethod::Area;
-  PairHessian hessian = PairHessian::Exact;
-  /// Most (triangle, tet) candidates of the broad phase a configuration may have before it is
-  /// declared invalid (see ContactEnergy::is_valid); 0 = automatic, max(100000, 20 x #tets).
-  std::size_t candidate_cap = 0;
-};
-
-/// Per-configuration contact figures (for logs and output).
-struct ContactStatistics {
-  Index pairs = 0;                ///< intersecting (triangle, tet) pairs
-  double area = 0;                ///< Σ polygon areas (L²); point method: Σ A_t/3 per inside vertex
-  double max_penetration = 0;     ///< largest interpolated depth on any polygon (L)
-  double mean_penetration = 0;    ///< ∫ g da / area (L), 0 without contact
-  double energy = 0;              ///< Ec (force × L)
-  /// Force on body i from body j (i < j), and for self-contact (i == i) half the sum of the
-  /// nodal force magnitudes. Indexed [i * #B + j]. Force unit.
-  std::vector<Vector3> body_pair_force;
-  NodalVectors nodal_force;       ///< -dEc/dx, #V x 3 (force)
-  VectorX nodal_pressure;         ///< |nodal force| / (1/3 of the adjacent surface area), #V (stress)
-};
-
-/// Wall-clock seconds of the phases of the last update() that recomputed the pairs.
-struct CollisionTimes {
-  double refit = 0;  ///< tet boxes and tree refit (or build)
-  double query = 0;  ///< triangle queries against the tree (broad phase)
-  double clip = 0;   ///< triangle ∩ tet clipping of the candidates (narrow phase)
-  Index candidates = 0;
-};
-
 class ContactEnergy final : public Energy {
  public:
   /// Throws InputError when sizes disagree, a depth is negative or not finite, a penalty is
-  /// negative or not finite, or the penalty matrix is not #B x #B.
+  /// negative or not finite, or the penalty matrix is not #B x #B (validate_contact_geometry).
   ContactEnergy(ContactGeometry geometry, ContactOptions options);
 
   std::string_view name() const override { return "contact"; }
-  /// +inf when the last update() overflowed (see is_valid).
+  /// Ec at x (force × L); +inf when the last update() overflowed (see is_valid).
   double value(const Positions& x) const override;
   /// False when the broad phase at x found more candidate pairs than ContactOptions::
-  /// candidate_cap (by default 20 per tet, at least 100000): the bodies overlap far beyond anything contact can resolve, as in a wild
-  /// Newton trial state. Such a state is rejected without building its pairs, which would take
-  /// memory in proportion to the overlap.
+  /// candidate_cap (by default 20 per tet, at least 100000): the bodies overlap far beyond
+  /// anything contact can resolve, as in a wild Newton trial state. Such a state is rejected
+  /// without building its pairs, which would take memory in proportion to the overlap.
   bool is_valid(const Positions& x) const override;
+  /// grad (#V x 3) += dEc/dx (force). Throws Error at an overflowed configuration.
   void add_gradient(const Positions& x, NodalVectors& grad) const override;
+  /// H += d²Ec/dx² (force / L) of the kind ContactOptions::hessian, into the blocks of
+  /// hessian_pattern(); throws std::logic_error when a block is missing.
   void add_hessian(const Positions& x, BlockSparseMatrix& H) const override;
+  /// The union of the node blocks of every pair active since construction.
   void hessian_pattern(std::vector<std::pair<Index, Index>>& pairs) const override;
+  /// Recomputes the pairs at x (#V x 3) unless x is the configuration of the last update.
   void update(const Positions& x) override;
+  /// Rebuilds the tree at x (#V x 3), then recomputes the pairs.
   void begin_step(const Positions& x) override;
-  std::uint64_t pattern_revision() const override { return revision_; }
+  std::uint64_t pattern_revision() const override { return collisions_.pattern_revision(); }
 
-  /// Figures at x (calls update(x) first).
-  ContactStatistics statistics(const Positions& x);
-
-  /// The active (triangle, tet) pairs at the last update(), sorted.
-  std::vector<std::pair<Index, Index>> active_pairs() const;
-  const ContactGeometry& geometry() const { return geometry_; }
-  const CollisionTimes& last_update_times() const { return times_; }
+  /// The collision set at the last update() (pairs, pattern, times).
+  const CollisionSet& collisions() const { return collisions_; }
+  /// The active (triangle, tet) pairs at the last update(), in the broad phase's order.
+  std::vector<std::pair<Index, Index>> active_pairs() const { return collisions_.pair_indices(); }
+  const ContactGeometry& geometry() const { return collisions_.geometry(); }
+  const CollisionTimes& last_update_times() const { return collisions_.times(); }
   const ContactOptions& options() const { return options_; }
-  Index num_bodies() const { return static_cast<Index>(geometry_.penalty.rows()); }
+  Index num_bodies() const { return static_cast<Index>(geometry().penalty.rows()); }
   /// ε of surface triangle f against tet t: the body pair's penalty times the smaller of the
   /// two penalty scales (force / L³).
-  double pair_penalty(Index f, Index t) const {
-    double e = geometry_.penalty(geometry_.surface_body[f], geometry_.tet_body[t]);
-    if (geometry_.surface_penalty_scale.size() > 0 || geometry_.tet_penalty_scale.size() > 0) {
-      const double sf = geometry_.surface_penalty_scale.size() > 0 ? geometry_.surface_penalty_scale[f] : 1.0;
-      const double st = geometry_.tet_penalty_scale.size() > 0 ? geometry_.tet_penalty_scale[t] : 1.0;
-      e *= std::min(sf, st);
-    }
-    return e;
-  }
+  double pair_penalty(Index f, Index t) const { return contact::pair_penalty(geometry(), f, t); }
 
  private:
-  struct ActivePair {
-    Index triangle = 0;
-    Index tet = 0;
-    double penalty = 0;
-    collision::ClipPolygon polygon;          ///< area method
-    collision::CollocationPoints points;     ///< point method
-  };
-  PairGeometry pair_geometry(const Positions& x, const ActivePair& p) const;
-  /// The 7 global nodes of a pair in local variable order.
-  std::array<Index, 7> pair_nodes(const ActivePair& p) const;
+  /// Throws std::logic_error unless x is the configuration of the last update().
   void require_current(const Positions& x) const;
 
-  ContactGeometry geometry_;
   ContactOptions options_;
-  collision::AabbTree tree_;
-  bool tree_built_ = false;
-  Positions current_x_;
-  std::vector<ActivePair> active_;
-  std::unordered_set<std::uint64_t> pattern_;
-  /// (triangle, tet) keys of every pair whose blocks are in pattern_.
-  std::unordered_set<std::uint64_t> pairs_in_pattern_;
-  std::uint64_t revision_ = 0;
-  CollisionTimes times_;
-  bool overflowed_ = false;  ///< the last update() found more candidates than the cap
-  /// Tets whose four nodes all have zero depth carry no energy (g ≡ 0) and are skipped.
-  std::vector<char> tet_has_depth_;
+  CollisionSet collisions_;
 };
+
+/// Ec (force × L) of the pairs of `collisions` at x (#V x 3), which must be the set's current
+/// positions; +inf when the set overflowed. Pair energies are summed in the set's order.
+double contact_energy_value(const CollisionSet& collisions, const Positions& x);
+
+/// The gradient (force) of one pair's energy (ε/2) I with respect to its 21 local variables
+/// (pair_integral.hpp), at positions x (#V x 3).
+PairVector pair_energy_gradient(const CollisionSet& collisions, const ActivePair& pair, const Positions& x);
 
 }  // namespace sinew::contact

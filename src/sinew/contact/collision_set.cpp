@@ -1,0 +1,154 @@
+#include "sinew/contact/collision_set.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "sinew/collision/broad_phase.hpp"
+
+namespace sinew::contact {
+namespace {
+
+std::uint64_t key(Index a, Index b) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+std::uint64_t block_key(Index a, Index b) { return a > b ? key(b, a) : key(a, b); }
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+}  // namespace
+
+CollisionSet::CollisionSet(std::shared_ptr<const ContactGeometry> geometry, ContactMethod method,
+                           std::size_t candidate_cap)
+    : geometry_(std::move(geometry)), integrator_(&pair_integrator(method)) {
+  if (!geometry_) throw std::invalid_argument("CollisionSet: no geometry");
+  const ContactGeometry& g = *geometry_;
+  validate_contact_geometry(g);
+  candidate_cap_ =
+      candidate_cap > 0 ? candidate_cap : std::max<std::size_t>(100000, 20 * static_cast<std::size_t>(g.tets.rows()));
+  tet_has_depth_.resize(static_cast<std::size_t>(g.tets.rows()));
+  for (Index t = 0; t < g.tets.rows(); ++t) {
+    double m = 0;
+    for (int k = 0; k < 4; ++k) m = std::max(m, g.depth[g.tets(t, k)]);
+    tet_has_depth_[static_cast<std::size_t>(t)] = m > 0;
+  }
+}
+
+CollisionSet::CollisionSet(ContactGeometry geometry, ContactMethod method, std::size_t candidate_cap)
+    : CollisionSet(std::make_shared<const ContactGeometry>(std::move(geometry)), method, candidate_cap) {}
+
+void CollisionSet::check_size(const Positions& x, const char* caller) const {
+  if (x.rows() != geometry_->depth.size())
+    throw std::invalid_argument(fmt::format("{}: x has {} rows, the contact geometry {} nodes", caller, x.rows(),
+                                            geometry_->depth.size()));
+}
+
+bool CollisionSet::is_current(const Positions& x) const {
+  return x.rows() == positions_.rows() && (x.array() == positions_.array()).all();
+}
+
+void CollisionSet::rebuild(const Positions& x) {
+  check_size(x, "CollisionSet::rebuild");
+  tree_.build(collision::tet_boxes(x, geometry_->tets));
+  tree_built_ = true;
+  positions_.resize(0, 3);  // force update() to recompute the pairs
+  update(x);
+}
+
+void CollisionSet::update(const Positions& x) {
+  if (is_current(x)) return;
+  check_size(x, "CollisionSet::update");
+  const ContactGeometry& g = *geometry_;
+  auto t0 = Clock::now();
+  if (!tree_built_) {
+    tree_.build(collision::tet_boxes(x, g.tets));
+    tree_built_ = true;
+  } else {
+    tree_.refit(collision::tet_boxes(x, g.tets));
+  }
+  positions_ = x;
+  times_.refit = seconds_since(t0);
+  t0 = Clock::now();
+  const auto candidates = collision::triangle_tet_candidates(x, g.surface, g.tets, tree_);
+  times_.query = seconds_since(t0);
+  times_.candidates = static_cast<Index>(candidates.size());
+  overflowed_ = candidates.size() > candidate_cap_;
+  if (overflowed_) {
+    active_.clear();
+    times_.clip = 0;
+    return;
+  }
+  t0 = Clock::now();
+  find_pairs(x, candidates);
+  times_.clip = seconds_since(t0);
+  grow_pattern();
+}
+
+void CollisionSet::find_pairs(const Positions& x, const std::vector<std::pair<Index, Index>>& candidates) {
+  // Kept pairs are gathered per thread, then put back in the candidates' order.
+  struct Kept {
+    std::size_t candidate;
+    ActivePair pair;
+  };
+  const ContactGeometry& g = *geometry_;
+  const PairIntegrator& integrator = *integrator_;
+  tbb::enumerable_thread_specific<std::vector<Kept>> kept_per_thread;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 256), [&](const auto& range) {
+    std::vector<Kept>& kept = kept_per_thread.local();
+    Kept item;
+    for (std::size_t k = range.begin(); k != range.end(); ++k) {
+      const auto [f, t] = candidates[k];
+      if (!tet_has_depth_[static_cast<std::size_t>(t)]) continue;
+      const double penalty = pair_penalty(g, f, t);
+      if (penalty == 0) continue;
+      ActivePair& p = item.pair;
+      p.triangle = f;
+      p.tet = t;
+      p.penalty = penalty;
+      if (integrator.find_support(pair_geometry(g, x, f, t), p.support)) {
+        item.candidate = k;
+        kept.push_back(item);
+      }
+    }
+  });
+  std::vector<Kept> all;
+  for (auto& kept : kept_per_thread) all.insert(all.end(), kept.begin(), kept.end());
+  std::sort(all.begin(), all.end(), [](const Kept& a, const Kept& b) { return a.candidate < b.candidate; });
+  active_.clear();
+  active_.reserve(all.size());
+  for (const Kept& item : all) active_.push_back(item.pair);
+}
+
+void CollisionSet::grow_pattern() {
+  // Only pairs never seen before can add blocks.
+  bool grew = false;
+  for (const ActivePair& p : active_) {
+    if (!pairs_in_pattern_.insert(key(p.triangle, p.tet)).second) continue;
+    const auto n = nodes(p);
+    for (std::size_t i = 0; i < n.size(); ++i)
+      for (std::size_t j = i + 1; j < n.size(); ++j)
+        if (n[i] != n[j] && pattern_.insert(block_key(n[i], n[j])).second) grew = true;
+  }
+  if (grew) ++revision_;
+}
+
+std::vector<std::pair<Index, Index>> CollisionSet::pair_indices() const {
+  std::vector<std::pair<Index, Index>> out;
+  out.reserve(active_.size());
+  for (const auto& p : active_) out.emplace_back(p.triangle, p.tet);
+  return out;
+}
+
+void CollisionSet::append_pattern(std::vector<std::pair<Index, Index>>& blocks) const {
+  blocks.reserve(blocks.size() + pattern_.size());
+  for (const std::uint64_t k : pattern_)
+    blocks.emplace_back(static_cast<Index>(k >> 32), static_cast<Index>(k & 0xffffffffu));
+}
+
+}  // namespace sinew::contact

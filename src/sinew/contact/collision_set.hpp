@@ -1,0 +1,127 @@
+#pragma once
+/// @file collision_set.hpp
+/// The set of colliding (surface triangle, tet) pairs of a configuration, in the manner of
+/// ipc-toolkit's collision sets: collision detection and its bookkeeping, no energy.
+///
+/// An AabbTree over the tets is built by rebuild() and refit by update() at every new
+/// configuration; each surface triangle is queried against it (broad phase), and the candidates
+/// are kept when their penalty is not zero, their tet has a non-zero depth somewhere and the
+/// method's PairIntegrator finds a support for them (narrow phase: clip polygon or collocation
+/// points). Pairs that share a node never come out of the broad phase. A configuration whose
+/// broad phase finds more candidates than the cap is "overflowed": no pairs are built.
+///
+/// The Hessian pattern is the union of the node blocks of every pair active since the set was
+/// created; pattern_revision() grows exactly when new blocks appear (docs/theory.md,
+/// "Material-depth contact energy"; dissertation chapter 5).
+///
+/// The set knows the ContactGeometry (shared, immutable plain arrays) and the method, never the
+/// finite element model. Units: lengths L, penalties force / L³, times in wall-clock seconds.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "sinew/collision/aabb_tree.hpp"
+#include "sinew/contact/contact_geometry.hpp"
+#include "sinew/contact/pair_integrator.hpp"
+
+namespace sinew::contact {
+
+/// Wall-clock seconds of the phases of the last update() that recomputed the pairs.
+struct CollisionTimes {
+  double refit = 0;  ///< tet boxes and tree refit (or build)
+  double query = 0;  ///< triangle queries against the tree (broad phase)
+  double clip = 0;   ///< triangle ∩ tet clipping of the candidates (narrow phase)
+  Index candidates = 0;
+};
+
+/// One colliding pair: surface triangle `triangle` (row of ContactGeometry::surface) against tet
+/// `tet` (row of ContactGeometry::tets), with its penalty ε (force / L³) and its support at the
+/// configuration of the last update.
+struct ActivePair {
+  Index triangle = 0;
+  Index tet = 0;
+  double penalty = 0;
+  PairSupport support;
+};
+
+class CollisionSet {
+ public:
+  /// `candidate_cap`: most broad-phase candidates before the configuration is overflowed;
+  /// 0 = automatic, max(100000, 20 x #tets). Throws InputError for an invalid geometry
+  /// (validate_contact_geometry).
+  CollisionSet(std::shared_ptr<const ContactGeometry> geometry, ContactMethod method, std::size_t candidate_cap = 0);
+  CollisionSet(ContactGeometry geometry, ContactMethod method, std::size_t candidate_cap = 0);
+
+  /// Builds the tree anew at x (#V x 3) and recomputes the pairs (start of a load or time step).
+  /// Throws std::invalid_argument when x does not have one row per node of the geometry.
+  void rebuild(const Positions& x);
+  /// Refits the tree to x (#V x 3; builds it the first time) and recomputes the pairs; does
+  /// nothing when x equals the positions of the last update. Throws std::invalid_argument when
+  /// x does not have one row per node of the geometry.
+  void update(const Positions& x);
+  /// True when the pairs are those of x (x equals the positions of the last update).
+  bool is_current(const Positions& x) const;
+  /// The positions of the last update (#V x 3; 0 rows before the first).
+  const Positions& positions() const { return positions_; }
+
+  /// True when the last update's broad phase found more candidates than candidate_cap(); the
+  /// pairs are then empty.
+  bool overflowed() const { return overflowed_; }
+  /// The colliding pairs at the last update, in the broad phase's order.
+  const std::vector<ActivePair>& pairs() const { return active_; }
+  /// The (triangle, tet) indices of pairs(), in the same order.
+  std::vector<std::pair<Index, Index>> pair_indices() const;
+  /// The effective candidate cap.
+  std::size_t candidate_cap() const { return candidate_cap_; }
+  const CollisionTimes& times() const { return times_; }
+
+  /// Appends the node pairs (a, b), a < b, of every off-diagonal block in the pattern union
+  /// (diagonal blocks are not listed: the objective has them anyway).
+  void append_pattern(std::vector<std::pair<Index, Index>>& blocks) const;
+  /// Number of off-diagonal blocks in the pattern union.
+  std::size_t pattern_size() const { return pattern_.size(); }
+  /// Grows by one at every update that added blocks to the pattern union; starts at 0.
+  std::uint64_t pattern_revision() const { return revision_; }
+
+  const ContactGeometry& geometry() const { return *geometry_; }
+  const std::shared_ptr<const ContactGeometry>& shared_geometry() const { return geometry_; }
+  ContactMethod method() const { return integrator_->method; }
+  const PairIntegrator& integrator() const { return *integrator_; }
+  /// The 7 global nodes of pair p (triangle's 3, then tet's 4).
+  std::array<Index, 7> nodes(const ActivePair& p) const { return pair_nodes(*geometry_, p.triangle, p.tet); }
+  /// The geometry of pair p at positions x (#V x 3).
+  PairGeometry pair_geometry_at(const Positions& x, const ActivePair& p) const {
+    return pair_geometry(*geometry_, x, p.triangle, p.tet);
+  }
+
+ private:
+  void check_size(const Positions& x, const char* caller) const;
+  /// Narrow phase of the candidates at x into active_.
+  void find_pairs(const Positions& x, const std::vector<std::pair<Index, Index>>& candidates);
+  /// Adds the blocks of pairs never seen before to the pattern union.
+  void grow_pattern();
+
+  std::shared_ptr<const ContactGeometry> geometry_;
+  const PairIntegrator* integrator_;
+  std::size_t candidate_cap_;
+  /// Per tet (#T): false when its four nodes all have zero depth (g ≡ 0, no energy; skipped).
+  std::vector<char> tet_has_depth_;
+  collision::AabbTree tree_;
+  bool tree_built_ = false;
+  Positions positions_;
+  std::vector<ActivePair> active_;
+  bool overflowed_ = false;
+  CollisionTimes times_;
+  /// Keys (min node, max node) of the off-diagonal blocks in the pattern union.
+  std::unordered_set<std::uint64_t> pattern_;
+  /// (triangle, tet) keys of every pair whose blocks are in pattern_.
+  std::unordered_set<std::uint64_t> pairs_in_pattern_;
+  std::uint64_t revision_ = 0;
+};
+
+}  // namespace sinew::contact
