@@ -11,12 +11,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "mesh/mesh_fixtures.hpp"
 #include "scene/scene_test_support.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/scene/build_contact.hpp"
 #include "sinew/scene/build_problem.hpp"
 #include "sinew/scene/load_scene.hpp"
+#include "support/box_mesh.hpp"
 
 namespace sinew::scene {
 namespace {
@@ -199,7 +199,7 @@ TEST(BuildContact, DepthFromAFile) {
 /// "depth" = z, "temperature" = x - 1 (negative at x < 1), "nan_depth" = z but NaN at
 /// (1, 1, 0.5), "partial" = z without a value at (0, 0, 0).
 void write_box_with_fields(const std::string& path) {
-  const mesh::TetMesh box = mesh::testing::box_mesh(2, 2, 1, 0.5);
+  const mesh::TetMesh box = sinew::testing::box_mesh(2, 2, 1, 0.5);
   const auto tag = [](Index v) { return 1000 - 7 * v; };
   std::ofstream out(path);
   out.precision(17);
