@@ -1,12 +1,11 @@
 #pragma once
 /// @file app_test_support.hpp
-/// Helpers of the command-line tests: a scratch directory per test, running the real `sinew`
-/// executable (SINEW_BINARY) with its standard output and error captured to files, and a small
-/// valid scene to break in one place per test.
+/// Helpers of the command-line tests: running the real `sinew` executable (SINEW_BINARY) with
+/// its standard output and error captured to files in a TempDir, and a small valid scene to
+/// break in one place per test.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <atomic>
 #include <cstdlib>
@@ -20,51 +19,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/files.hpp"
+#include "support/temp_dir.hpp"
+
 namespace sinew::app_test {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-/// A fresh directory under the system temporary directory, unique per process, test and
-/// instance; removed (with everything in it) at destruction.
-class ScratchDirectory {
- public:
-  ScratchDirectory() {
-    static std::atomic<int> counter{0};
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::string test = info ? std::string(info->test_suite_name()) + "_" + info->name() : "none";
-    path_ = fs::temp_directory_path() /
-            ("sinew_app_" + std::to_string(::getpid()) + "_" + test + "_" + std::to_string(counter++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDirectory() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  ScratchDirectory(const ScratchDirectory&) = delete;
-  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-
-  const fs::path& path() const { return path_; }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
-};
-
-inline std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open " + path.string());
-  std::ostringstream content;
-  content << in.rdbuf();
-  return content.str();
-}
-
-inline void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-}
+using sinew::testing::read_text;
+using sinew::testing::TempDir;
+using sinew::testing::write_text;
 
 /// `text` in single quotes for /bin/sh.
 inline std::string shell_quote(const std::string& text) {
@@ -87,7 +52,7 @@ struct CommandResult {
 
 /// Runs SINEW_BINARY with `arguments` (each quoted), standard output and error captured in
 /// files of `directory`, and returns the exit code and both texts.
-inline CommandResult run_sinew(const std::vector<std::string>& arguments, const ScratchDirectory& directory) {
+inline CommandResult run_sinew(const std::vector<std::string>& arguments, const TempDir& directory) {
   static std::atomic<int> counter{0};
   const int n = counter++;
   const fs::path out_file = directory / ("stdout_" + std::to_string(n) + ".txt");
@@ -104,7 +69,7 @@ inline CommandResult run_sinew(const std::vector<std::string>& arguments, const 
 }
 
 /// `sinew run <scene> -o <output> --no-progress`.
-inline CommandResult run_scene_file(const fs::path& scene, const fs::path& output, const ScratchDirectory& directory) {
+inline CommandResult run_scene_file(const fs::path& scene, const fs::path& output, const TempDir& directory) {
   return run_sinew({"run", scene.string(), "-o", output.string(), "--no-progress"}, directory);
 }
 

@@ -20,7 +20,7 @@ using ::testing::Not;
 /// A scratch directory holding a scene file; `run()` solves it into "<dir>/out".
 class BadInput : public ::testing::Test {
  protected:
-  ScratchDirectory directory;
+  TempDir directory;
   fs::path scene_path = directory / "scene.json";
   fs::path output = directory / "out";
 

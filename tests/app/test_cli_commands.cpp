@@ -20,7 +20,7 @@ using ::testing::StartsWith;
 const fs::path kSource(SINEW_SOURCE_DIR);
 
 TEST(Cli, ValidateAcceptsEveryExample) {
-  ScratchDirectory directory;
+  TempDir directory;
   int examples = 0;
   for (const auto& entry : fs::directory_iterator(kSource / "examples")) {
     if (entry.path().extension() != ".json") continue;
@@ -33,7 +33,7 @@ TEST(Cli, ValidateAcceptsEveryExample) {
 }
 
 TEST(Cli, ValidateWritesNothing) {
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path scene = directory / "scene.json";
   write_text(scene, small_block_scene().dump(2));
   const CommandResult result = run_sinew({"validate", scene.string()}, directory);
@@ -51,7 +51,7 @@ int reported_nodes(const std::string& text) {
 }
 
 TEST(Cli, ElementSizeOverridesEveryGeneratedMesh) {
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path scene = directory / "scene.json";
   write_text(scene, small_block_scene().dump(2));  // element_size 5
   const CommandResult as_written = run_sinew({"validate", scene.string()}, directory);
@@ -72,7 +72,7 @@ TEST(Cli, ElementSizeOverridesEveryGeneratedMesh) {
 }
 
 TEST(Cli, RunOnAMissingSceneFileNamesIt) {
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path missing = directory / "missing-scene.json";
   const CommandResult result = run_sinew({"run", missing.string(), "-o", (directory / "out").string()}, directory);
   EXPECT_EQ(result.exit_code, 1);
@@ -81,7 +81,7 @@ TEST(Cli, RunOnAMissingSceneFileNamesIt) {
 }
 
 TEST(Cli, ValidateOnAMissingSceneFileNamesIt) {
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path missing = directory / "missing-scene.json";
   const CommandResult result = run_sinew({"validate", missing.string()}, directory);
   EXPECT_EQ(result.exit_code, 1);
@@ -89,20 +89,20 @@ TEST(Cli, ValidateOnAMissingSceneFileNamesIt) {
 }
 
 TEST(Cli, HelpExitsZeroAndListsTheCommands) {
-  ScratchDirectory directory;
+  TempDir directory;
   const CommandResult result = run_sinew({"--help"}, directory);
   EXPECT_EQ(result.exit_code, 0) << result.err;
   for (const char* command : {"run", "validate", "schema"}) EXPECT_THAT(result.out, HasSubstr(command));
 }
 
 TEST(Cli, NoCommandIsAUsageError) {
-  ScratchDirectory directory;
+  TempDir directory;
   const CommandResult result = run_sinew({}, directory);
   EXPECT_NE(result.exit_code, 0);
 }
 
 TEST(Cli, SchemaMarkdownIsTheCommittedReference) {
-  ScratchDirectory directory;
+  TempDir directory;
   const CommandResult result = run_sinew({"schema", "--markdown"}, directory);
   EXPECT_EQ(result.exit_code, 0) << result.err;
   const std::string committed = read_text(kSource / "docs" / "scene-reference.md");
@@ -128,7 +128,7 @@ TEST(Cli, SchemaMarkdownIsTheCommittedReference) {
 }
 
 TEST(Cli, SchemaJsonIsAJsonSchema) {
-  ScratchDirectory directory;
+  TempDir directory;
   const CommandResult result = run_sinew({"schema", "--json"}, directory);
   EXPECT_EQ(result.exit_code, 0) << result.err;
   json schema;
@@ -143,7 +143,7 @@ TEST(Cli, SchemaJsonIsAJsonSchema) {
 }
 
 TEST(Cli, SchemaToAFileWritesTheSameText) {
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path file = directory / "schema.json";
   const CommandResult to_file = run_sinew({"schema", "--json", "-o", file.string()}, directory);
   EXPECT_EQ(to_file.exit_code, 0) << to_file.err;
@@ -153,7 +153,7 @@ TEST(Cli, SchemaToAFileWritesTheSameText) {
 }
 
 TEST(Cli, SuccessfulRunWritesEveryOutputAtomically) {
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path scene = directory / "scene.json";
   const fs::path output = directory / "out";
   write_text(scene, small_block_scene().dump(2));
@@ -180,7 +180,7 @@ TEST(Cli, SuccessfulRunWritesEveryOutputAtomically) {
 // state was reported as "the initial state (lambda = 0) has no equilibrium" because the
 // round-off of its elastic forces lay above a residual floor scaled by the shear modulus alone.
 TEST(Cli, AStressFreeRestStateIsSolvedWithZeroDisplacement) {
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path scene = directory / "scene.json";
   const fs::path output = directory / "out";
   json rest = small_block_scene();
@@ -206,7 +206,7 @@ json coarse_convergence_scene() {
 }
 
 TEST(Cli, StudyConvergencePrintsTheTableAndWritesItsFiles) {
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path scene = directory / "scene.json";
   write_text(scene, coarse_convergence_scene().dump(2));
   const fs::path study = directory / "study";
@@ -227,7 +227,7 @@ TEST(Cli, StudyConvergencePrintsTheTableAndWritesItsFiles) {
 }
 
 TEST(Cli, StudyConvergenceRejectsBadOptionsBeforeWriting) {
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path scene = directory / "scene.json";
   write_text(scene, coarse_convergence_scene().dump(2));
   const fs::path study = directory / "study";
@@ -247,7 +247,7 @@ TEST(Cli, StudyConvergenceRejectsBadOptionsBeforeWriting) {
 // A mesh far beyond the machine is refused from its estimate before meshing; --max-tets moves
 // the limit both ways.
 TEST(Cli, MaxTetsBoundsTheEstimatedMeshBeforeMeshing) {
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path scene = directory / "scene.json";
   write_text(scene, small_block_scene().dump(2));  // 10 mm cube, element_size 5
   const CommandResult tiny = run_sinew({"validate", scene.string(), "--element-size", "0.01"}, directory);

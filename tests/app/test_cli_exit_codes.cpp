@@ -33,7 +33,7 @@ struct Mistake {
 };
 
 TEST(ExitCodes, EveryCommandLineMistakeExitsOneAndNamesIt) {
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path scene = directory / "scene.json";
   write_text(scene, small_block_scene().dump(2));
   const std::vector<Mistake> mistakes{
@@ -76,7 +76,7 @@ TEST(ExitCodes, EveryCommandLineMistakeExitsOneAndNamesIt) {
 }
 
 TEST(ExitCodes, HelpExitsZeroAndDocumentsEveryExitCode) {
-  ScratchDirectory directory;
+  TempDir directory;
   for (const std::vector<std::string>& arguments :
        {std::vector<std::string>{"--help"}, std::vector<std::string>{"run", "--help"}}) {
     const CommandResult result = run_sinew(arguments, directory);
@@ -93,7 +93,7 @@ TEST(ExitCodes, HelpExitsZeroAndDocumentsEveryExitCode) {
 // An explicit ball drop whose rigid ground is free with density 0 once aborted `sinew run`
 // (exit code 134) after `validate` had passed it.
 TEST(ExitCodes, AFreeMasslessRigidBodyInAnExplicitRunIsAnInputError) {
-  ScratchDirectory directory;
+  TempDir directory;
   json scene = json::parse(read_text(fs::path(SINEW_SOURCE_DIR) / "examples" / "ball-drop.json"));
   scene["bodies"][1]["regions"]["ground"] = {{"rigid", "free"}, {"density", 0}};
   scene["dynamics"]["integrator"] = "explicit";

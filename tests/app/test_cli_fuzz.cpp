@@ -175,7 +175,7 @@ struct Outcomes {
 /// Runs `arguments` under a time bound and classifies the end: exit codes 0-5 are documented
 /// (0, 1 for validate; 0, 1, 2 for a run of a valid scene: 3-5 count as failures too).
 void run_case(const std::string& binary, const std::string& kind, const std::vector<std::string>& arguments,
-              const std::vector<int>& allowed, const ScratchDirectory& directory, const fs::path& scene,
+              const std::vector<int>& allowed, const TempDir& directory, const fs::path& scene,
               Outcomes& outcomes) {
   std::string command = "timeout -s KILL " + std::to_string(kCaseSeconds) + " " + shell_quote(binary);
   for (const auto& a : arguments) command += " " + shell_quote(a);
@@ -224,7 +224,7 @@ TEST(Fuzz, MutatedScenesThroughValidateNeverCrashOrHang) {
   const std::string binary = env_string("SINEW_FUZZ_BINARY", SINEW_BINARY);
   const std::vector<json> bases = base_scenes();
   Mutator mutator(static_cast<std::uint64_t>(seed));
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path scene_path = directory / "scene.json";
   Outcomes outcomes;
   for (int k = 0; k < cases; ++k) {
@@ -248,7 +248,7 @@ TEST(Fuzz, MutatedPhysicalValuesThroughRunNeverCrashOrHang) {
   ball["solver"]["increments"] = 2;
   bases.push_back(ball);
   Mutator mutator(static_cast<std::uint64_t>(seed) * 7919);
-  ScratchDirectory directory;
+  TempDir directory;
   const fs::path scene_path = directory / "scene.json";
   Outcomes outcomes;
   for (int k = 0; k < cases; ++k) {

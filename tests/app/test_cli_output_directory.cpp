@@ -22,7 +22,7 @@ using ::testing::Not;
 
 class OutputDirectory : public ::testing::Test {
  protected:
-  ScratchDirectory directory;
+  TempDir directory;
   fs::path scene_path = directory / "scene.json";
   fs::path output = directory / "out";
 

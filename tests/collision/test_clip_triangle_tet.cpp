@@ -7,39 +7,23 @@
 
 #include "sinew/collision/clip_triangle_tet.hpp"
 #include "sinew/collision/polygon_quadrature.hpp"
+#include "support/tet_geometry.hpp"
 
 using namespace sinew;
 using namespace sinew::collision;
 
 namespace {
 
-using TetMatrix = Eigen::Matrix<double, 4, 3>;
-
-/// Barycentric coordinates by a 4x4 solve, independent of the library's per-face formula.
-Eigen::Vector4d reference_barycentric(const Vector3& x, const TetMatrix& tet) {
-  Eigen::Matrix4d m;
-  m.topRows<3>() = tet.transpose();
-  m.row(3).setOnes();
-  Eigen::Vector4d rhs;
-  rhs << x, 1.0;
-  return m.fullPivLu().solve(rhs);
-}
+using sinew::testing::polygon_area;
+using sinew::testing::random_tet;
+using sinew::testing::reference_barycentric;
+using sinew::testing::TetMatrix;
+using sinew::testing::triangle_area;
+using sinew::testing::unit_tet;
 
 bool inside_closed(const Vector3& x, const TetMatrix& tet, double tol) {
   const Eigen::Vector4d xi = reference_barycentric(x, tet);
   return (xi.array() >= -tol).all();
-}
-
-double triangle_area(const Matrix3& t) {
-  return 0.5 * (t.row(1) - t.row(0)).cross(t.row(2) - t.row(0)).norm();
-}
-
-double polygon_area(const ClipPolygon& p) {
-  double area = 0;
-  for (int k = 1; k + 1 < p.count; ++k) {
-    area += 0.5 * (p.vertices[k] - p.vertices[0]).cross(p.vertices[k + 1] - p.vertices[0]).norm();
-  }
-  return area;
 }
 
 /// Area of triangle ∩ tet by point-in-tet tests at the centroids of the n² sub-triangles of a
@@ -64,23 +48,6 @@ double sampled_area(const Matrix3& tri, const TetMatrix& tet, int n) {
     }
   }
   return triangle_area(tri) * static_cast<double>(inside) / (static_cast<double>(n) * n);
-}
-
-TetMatrix unit_tet() {
-  TetMatrix t;
-  t << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
-  return t;
-}
-
-TetMatrix random_tet(std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (;;) {
-    TetMatrix t;
-    for (int i = 0; i < 4; ++i) t.row(i) = Eigen::RowVector3d(u(rng), u(rng), u(rng));
-    Matrix3 d;
-    for (int i = 0; i < 3; ++i) d.row(i) = t.row(i + 1) - t.row(0);
-    if (std::abs(d.determinant()) > 0.2) return t;
-  }
 }
 
 Matrix3 random_triangle(std::mt19937& rng, double size) {

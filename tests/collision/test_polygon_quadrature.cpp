@@ -8,13 +8,16 @@
 
 #include "sinew/collision/clip_triangle_tet.hpp"
 #include "sinew/collision/polygon_quadrature.hpp"
+#include "support/tet_geometry.hpp"
 
 using namespace sinew;
 using namespace sinew::collision;
 
 namespace {
 
-using TetMatrix = Eigen::Matrix<double, 4, 3>;
+using sinew::testing::random_tet;
+using sinew::testing::reference_barycentric;
+using sinew::testing::TetMatrix;
 
 /// Radon's 7-point rule on a triangle (exact up to degree 5): barycentric points and weights.
 double radon7(const Vector3& a, const Vector3& b, const Vector3& c,
@@ -47,26 +50,6 @@ double reference_integral(const std::vector<Vector3>& poly,
     }
   }
   return total;
-}
-
-TetMatrix random_tet(std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (;;) {
-    TetMatrix t;
-    for (int i = 0; i < 4; ++i) t.row(i) = Eigen::RowVector3d(u(rng), u(rng), u(rng));
-    Matrix3 d;
-    for (int i = 0; i < 3; ++i) d.row(i) = t.row(i + 1) - t.row(0);
-    if (std::abs(d.determinant()) > 0.2) return t;
-  }
-}
-
-Eigen::Vector4d reference_barycentric(const Vector3& x, const TetMatrix& tet) {
-  Eigen::Matrix4d m;
-  m.topRows<3>() = tet.transpose();
-  m.row(3).setOnes();
-  Eigen::Vector4d rhs;
-  rhs << x, 1.0;
-  return m.fullPivLu().solve(rhs);
 }
 
 /// Random clip polygons with at least `min_vertices` vertices.

@@ -21,6 +21,7 @@
 #include "sinew/collision/clip_triangle_tet.hpp"
 #include "sinew/collision/polygon_quadrature.hpp"
 #include "support/fd_check.hpp"
+#include "support/tet_geometry.hpp"
 
 namespace sinew::contact {
 namespace {
@@ -28,42 +29,14 @@ namespace {
 namespace st = sinew::testing;
 using collision::ClipPolygon;
 using collision::CollocationPoints;
+using st::polygon_area;
+using st::random_tet;
+using st::reference_barycentric;
+using st::triangle_area;
+using st::unit_tet;
 
 // ---------------------------------------------------------------------------------------------
 // Helpers
-
-/// Barycentric coordinates by a 4x4 solve (independent of the library's per-face formula).
-Eigen::Vector4d reference_barycentric(const Vector3& x, const TetVertices& tet) {
-  Eigen::Matrix4d m;
-  m.topRows<3>() = tet.transpose();
-  m.row(3).setOnes();
-  Eigen::Vector4d rhs;
-  rhs << x, 1.0;
-  return m.fullPivLu().solve(rhs);
-}
-
-/// A well-shaped random tet in [-1, 1]^3 (|det| of the edge matrix > 0.2).
-TetVertices random_tet(std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (;;) {
-    TetVertices t;
-    for (int i = 0; i < 4; ++i) t.row(i) = Eigen::RowVector3d(u(rng), u(rng), u(rng));
-    Matrix3 d;
-    for (int i = 0; i < 3; ++i) d.row(i) = t.row(i + 1) - t.row(0);
-    if (std::abs(d.determinant()) > 0.2) return t;
-  }
-}
-
-double triangle_area(const Matrix3& t) { return 0.5 * (t.row(1) - t.row(0)).cross(t.row(2) - t.row(0)).norm(); }
-
-double polygon_area(const ClipPolygon& p) {
-  double area = 0;
-  for (int k = 1; k + 1 < p.count; ++k)
-    area += 0.5 * (p.vertices[static_cast<std::size_t>(k)] - p.vertices[0])
-                      .cross(p.vertices[static_cast<std::size_t>(k + 1)] - p.vertices[0])
-                      .norm();
-  return area;
-}
 
 /// A random pair whose clip polygon has at least `min_area` area: a triangle of random size
 /// near the tet's centroid, random non-negative depths (some exactly zero).
@@ -537,12 +510,6 @@ struct Case {
   Matrix3 triangle;
   TetVertices tet;
 };
-
-TetVertices unit_tet() {
-  TetVertices t;
-  t << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
-  return t;
-}
 
 std::vector<Case> adversarial_cases() {
   std::vector<Case> cases;

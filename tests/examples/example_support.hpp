@@ -1,15 +1,12 @@
 #pragma once
 /// @file example_support.hpp
-/// Helpers of the example regression tests: a scratch directory per test, readers for the
-/// files a run writes (steps.csv, sinew.pvd, the points and displacements of a .vtu; written
-/// here independently of the writers) and a runner that solves an example scene through the
-/// library.
+/// Helpers of the example regression tests: readers for the files a run writes (steps.csv,
+/// sinew.pvd, the points and displacements of a .vtu; written here independently of the
+/// writers) and a runner that solves an example scene through the library into a TempDir.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstring>
@@ -26,44 +23,17 @@
 
 #include "run_scene.hpp"
 #include "sinew/scene/load_scene.hpp"
+#include "support/base64_decode.hpp"
+#include "support/files.hpp"
+#include "support/temp_dir.hpp"
 
 namespace sinew::examples_test {
 
 namespace fs = std::filesystem;
 
-/// A fresh directory under the system temporary directory, unique per process, test and
-/// instance; removed (with everything in it) at destruction.
-class ScratchDirectory {
- public:
-  ScratchDirectory() {
-    static std::atomic<int> counter{0};
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::string test = info ? std::string(info->test_suite_name()) + "_" + info->name() : "none";
-    path_ = fs::temp_directory_path() /
-            ("sinew_examples_" + std::to_string(::getpid()) + "_" + test + "_" + std::to_string(counter++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDirectory() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  ScratchDirectory(const ScratchDirectory&) = delete;
-  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-inline std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open " + path.string());
-  std::ostringstream content;
-  content << in.rdbuf();
-  return content.str();
-}
+using sinew::testing::decode_base64;
+using sinew::testing::read_text;
+using sinew::testing::TempDir;
 
 /// A CSV file of numbers with a header line (no quoted fields: steps.csv and newton.csv).
 struct CsvTable {
@@ -168,35 +138,6 @@ inline std::vector<PvdEntry> read_pvd(const fs::path& path) {
   return entries;
 }
 
-inline std::string decode_base64(const std::string& text) {
-  auto value_of = [](char c) -> std::uint32_t {
-    if (c >= 'A' && c <= 'Z') return static_cast<std::uint32_t>(c - 'A');
-    if (c >= 'a' && c <= 'z') return static_cast<std::uint32_t>(c - 'a' + 26);
-    if (c >= '0' && c <= '9') return static_cast<std::uint32_t>(c - '0' + 52);
-    if (c == '+') return 62;
-    if (c == '/') return 63;
-    throw std::runtime_error(std::string("invalid base64 character '") + c + "'");
-  };
-  if (text.size() % 4 != 0) throw std::runtime_error("base64 length is not a multiple of 4");
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); i += 4) {
-    std::uint32_t bits = 0;
-    int padding = 0;
-    for (std::size_t j = 0; j < 4; ++j) {
-      bits <<= 6;
-      if (text[i + j] == '=') {
-        ++padding;
-      } else {
-        bits |= value_of(text[i + j]);
-      }
-    }
-    out.push_back(static_cast<char>((bits >> 16) & 0xFF));
-    if (padding < 2) out.push_back(static_cast<char>((bits >> 8) & 0xFF));
-    if (padding < 1) out.push_back(static_cast<char>(bits & 0xFF));
-  }
-  return out;
-}
-
 /// The Float64 DataArray named `name` with `components` components of a binary .vtu (UInt64
 /// header), #entries x components.
 inline Eigen::MatrixXd vtu_array(const std::string& xml, const std::string& name, int components = 1) {
@@ -258,7 +199,7 @@ inline fs::path example_path(const std::string& name) {
 }
 
 /// Runs `config` through the library into `<directory>/<subdirectory>`.
-inline ExampleRun run_config(scene::SceneConfig config, const ScratchDirectory& directory, const std::string& name,
+inline ExampleRun run_config(scene::SceneConfig config, const TempDir& directory, const std::string& name,
                              const std::string& subdirectory = "out") {
   ExampleRun run;
   run.config = std::move(config);
@@ -276,7 +217,7 @@ inline ExampleRun run_config(scene::SceneConfig config, const ScratchDirectory& 
 }
 
 /// Loads examples/<name>.json and runs it through the library into `<directory>/out`.
-inline ExampleRun run_example(const std::string& name, const ScratchDirectory& directory) {
+inline ExampleRun run_example(const std::string& name, const TempDir& directory) {
   return run_config(scene::load_scene_file(example_path(name).string()), directory, name);
 }
 

@@ -15,7 +15,7 @@ namespace {
 // hertz-ball: quarter hemisphere (R = 10 mm, E = 1 MPa, nu = 0.3) pressed d = 0.5 lambda mm on a
 // rigid block. Hertz: F = 4/3 E/(1 - nu^2) sqrt(R) d^1.5 (whole sphere; the model is a quarter).
 TEST(ContactExamples, HertzBallFollowsHertzLawForSmallIndentation) {
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run = run_example("hertz-ball", directory);
   expect_complete_outputs(run);
   ASSERT_TRUE(run.report.success) << run.report.message;
@@ -52,7 +52,7 @@ TEST(ContactExamples, HertzBallFollowsHertzLawForSmallIndentation) {
 
 // stacked-blocks: the contact patch test with non-matching meshes.
 TEST(ContactExamples, StackedBlocksPassTheContactPatchTest) {
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run = run_example("stacked-blocks", directory);
   expect_complete_outputs(run);
   ASSERT_TRUE(run.report.success) << run.report.message;
@@ -85,7 +85,7 @@ TEST(ContactExamples, StackedBlocksPassTheContactPatchTest) {
 
 // pinched-tube: two rigid plates pinch a clamped tube until its inner wall touches itself.
 TEST(ContactExamples, PinchedTubeTouchesItselfAndBalances) {
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run = run_example("pinched-tube", directory);
   expect_complete_outputs(run);
   ASSERT_TRUE(run.report.success) << run.report.message;
@@ -129,7 +129,7 @@ TEST(ContactExamples, PinchedTubeTouchesItselfAndBalances) {
 
 // corner-wedge: the dissertation's Fig. 25 pair, starting 0.5 mm interpenetrated.
 TEST(ContactExamples, CornerWedgeSeparatesFromDeepPenetrationAndConverges) {
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run = run_example("corner-wedge", directory);
   expect_complete_outputs(run);
   ASSERT_TRUE(run.report.success) << run.report.message;

@@ -25,7 +25,7 @@ scene::SceneConfig shortened_study_scene() {
 }
 
 TEST(ConvergenceStudy, AreaIntegrationConvergesForEveryPenaltyAndPenetrationFallsAsThePenaltyGrows) {
-  ScratchDirectory directory;
+  TempDir directory;
   app::ConvergenceStudyOptions options;
   options.output_directory = (directory.path() / "study").string();
 #if defined(__SANITIZE_ADDRESS__)
@@ -78,7 +78,7 @@ TEST(ConvergenceStudy, PointCollocationIsReportedAndTheForceSweepIsWritten) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "point collocation chatters through many step cuts: too slow under AddressSanitizer";
 #endif
-  ScratchDirectory directory;
+  TempDir directory;
   app::ConvergenceStudyOptions options;
   options.output_directory = (directory.path() / "study").string();
   options.penalties = {1000};
@@ -108,7 +108,7 @@ TEST(ConvergenceStudy, PointCollocationIsReportedAndTheForceSweepIsWritten) {
 }
 
 TEST(ConvergenceStudy, BadOptionsAreNamedBeforeAnythingIsWritten) {
-  ScratchDirectory directory;
+  TempDir directory;
   const scene::SceneConfig config = shortened_study_scene();
   auto expect_rejected = [&](app::ConvergenceStudyOptions options, const std::string& needle) {
     options.output_directory = (directory.path() / "never").string();

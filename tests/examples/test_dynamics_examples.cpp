@@ -58,7 +58,7 @@ double largest_rise(const EnergySeries& e) {
 }
 
 TEST(DynamicsExamples, SaggingBarsSettleOnTheStaticSolution) {
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run = run_example("sagging-bars", directory);
   ASSERT_TRUE(run.report.success) << run.report.message;
   const auto& result = run.report.result;
@@ -146,7 +146,7 @@ TEST(DynamicsExamples, FallingRodsHitTheBarWithBoundedPenetrationAndNoInvertedEl
   rods = kept;
   config.dynamics.options.end_time = 0.5;
   config.dynamics.options.output_interval = 0.1;
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run = run_config(config, directory, "falling-rods (2 x 3 rods, 0.5 s)");
   ASSERT_TRUE(run.report.success) << run.report.message;
   const auto steps = read_csv(run.output / "steps.csv");
@@ -193,7 +193,7 @@ TEST(DynamicsExamples, BallDropRestsInTheSameStateExplicitAndImplicit) {
   implicit_config.dynamics.mass_damping = 20;  // at rest within the shortened run
   scene::SceneConfig explicit_config = implicit_config;
   explicit_config.dynamics.options.integrator = solver::DynamicOptions::Integrator::Explicit;
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun implicit_run = run_config(implicit_config, directory, "ball-drop implicit", "implicit");
   const ExampleRun explicit_run = run_config(explicit_config, directory, "ball-drop explicit", "explicit");
   ASSERT_TRUE(implicit_run.report.success) << implicit_run.report.message;
@@ -233,7 +233,7 @@ TEST(DynamicsExamples, BallDropRestsInTheSameStateExplicitAndImplicit) {
 }
 
 TEST(DynamicsExamples, ImplicitEulerWithoutViscosityDissipatesMonotonically) {
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run =
       run_config(single_bar(solver::DynamicOptions::Integrator::ImplicitEuler, 0.3), directory, "implicit", "implicit");
   ASSERT_TRUE(run.report.success) << run.report.message;
@@ -245,7 +245,7 @@ TEST(DynamicsExamples, ImplicitEulerWithoutViscosityDissipatesMonotonically) {
 }
 
 TEST(DynamicsExamples, ExplicitCentralDifferencesConserveEnergyWithoutViscosity) {
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run =
       run_config(single_bar(solver::DynamicOptions::Integrator::Explicit, 0.3), directory, "explicit", "explicit");
   ASSERT_TRUE(run.report.success) << run.report.message;
@@ -263,7 +263,7 @@ TEST(DynamicsExamples, ExplicitCentralDifferencesConserveEnergyWithoutViscosity)
 }
 
 TEST(DynamicsExamples, ViscosityMakesTheTotalEnergyDecreaseForEveryIntegrator) {
-  ScratchDirectory directory;
+  TempDir directory;
   for (const auto integrator : {solver::DynamicOptions::Integrator::ImplicitEuler,
                                 solver::DynamicOptions::Integrator::Explicit}) {
     scene::SceneConfig config = single_bar(integrator, 0.2);

@@ -50,7 +50,7 @@ double axial_nominal_stress(const MooneyRivlin& m, double l, double s) {
 }
 
 TEST(Examples, UniaxialMooneyRivlinFollowsTheClosedFormAtEveryIncrement) {
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run = run_example("uniaxial-mooney-rivlin", directory);
   expect_complete_outputs(run);
   ASSERT_TRUE(run.report.success);
@@ -117,7 +117,7 @@ TEST(Examples, UniaxialMooneyRivlinFollowsTheClosedFormAtEveryIncrement) {
 // cantilever-gravity
 
 TEST(Examples, CantileverGravityCarriesItsWeightAndSagsAsRecorded) {
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run = run_example("cantilever-gravity", directory);
   expect_complete_outputs(run);
   ASSERT_TRUE(run.report.success);
@@ -177,7 +177,7 @@ TEST(Examples, CantileverGravityCarriesItsWeightAndSagsAsRecorded) {
 // twisted-cylinder
 
 TEST(Examples, TwistedCylinderTorqueBalancesAndStiffens) {
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run = run_example("twisted-cylinder", directory);
   expect_complete_outputs(run);
   ASSERT_TRUE(run.report.success);
@@ -225,7 +225,7 @@ TEST(Examples, TwistedCylinderTorqueBalancesAndStiffens) {
 // compressed-block
 
 TEST(Examples, CompressedBlockBalancesBulgesAndStiffens) {
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run = run_example("compressed-block", directory);
   expect_complete_outputs(run);
   ASSERT_TRUE(run.report.success);

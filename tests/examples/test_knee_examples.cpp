@@ -25,7 +25,7 @@ TEST(KneeExamples, CoarseFlexionMovesThePatellaDistallyWithoutInversionOrDeepPen
   ASSERT_NEAR(tibia.rigid_motion.angle, 150.0 * M_PI / 180.0, 1e-12);
   tibia.rigid_motion.angle = 30.0 * M_PI / 180.0;
   config.solver.stepping.increments = 10;
-  ScratchDirectory directory;
+  TempDir directory;
   const ExampleRun run = run_config(config, directory, "knee-flexion (20 mm, 30 degrees)");
   ASSERT_TRUE(run.report.success) << run.report.message;
   EXPECT_EQ(run.report.result.segments_completed, 10);

@@ -1,10 +1,8 @@
 #pragma once
 /// @file io_test_support.hpp
-/// Helpers shared by the io tests: a scratch directory per test, whole-file reads, a base64
-/// decoder and a minimal scan of VTK XML DataArray elements (independent of the writer).
-
-#include <gtest/gtest.h>
-#include <unistd.h>
+/// Helpers shared by the io tests: a minimal scan of VTK XML DataArray elements (independent of
+/// the writer) and the decoding of their binary arrays; TempDir, read_text and decode_base64
+/// come from tests/support.
 
 #include <algorithm>
 #include <cstdint>
@@ -17,43 +15,15 @@
 #include <string>
 #include <vector>
 
+#include "support/base64_decode.hpp"
+#include "support/files.hpp"
+#include "support/temp_dir.hpp"
+
 namespace sinew::io::testing {
 
-/// A fresh, empty directory named after the running test, removed at destruction.
-class ScratchDirectory {
- public:
-  ScratchDirectory() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            ("sinew_test_io_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" +
-             info->name());
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDirectory() {
-    std::error_code ignored;
-    std::filesystem::permissions(path_, std::filesystem::perms::owner_all,
-                                 std::filesystem::perm_options::add, ignored);
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchDirectory(const ScratchDirectory&) = delete;
-  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-
-  const std::filesystem::path& path() const { return path_; }
-  /// `name` inside the directory, as a string.
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
-};
-
-inline std::string read_whole_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open " + path);
-  std::ostringstream content;
-  content << in.rdbuf();
-  return content.str();
-}
+using sinew::testing::decode_base64;
+using sinew::testing::read_text;
+using sinew::testing::TempDir;
 
 /// Names of the entries of `directory` (not recursive), sorted.
 inline std::vector<std::string> directory_entries(const std::filesystem::path& directory) {
@@ -63,37 +33,6 @@ inline std::vector<std::string> directory_entries(const std::filesystem::path& d
   }
   std::sort(names.begin(), names.end());
   return names;
-}
-
-/// Decodes standard base64 with '=' padding; throws on characters outside the alphabet.
-inline std::string decode_base64(const std::string& text) {
-  auto value_of = [](char c) -> int {
-    if (c >= 'A' && c <= 'Z') return c - 'A';
-    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
-    if (c >= '0' && c <= '9') return c - '0' + 52;
-    if (c == '+') return 62;
-    if (c == '/') return 63;
-    throw std::runtime_error(std::string("invalid base64 character '") + c + "'");
-  };
-  if (text.size() % 4 != 0) throw std::runtime_error("base64 length is not a multiple of 4");
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); i += 4) {
-    std::uint32_t bits = 0;
-    int padding = 0;
-    for (std::size_t j = 0; j < 4; ++j) {
-      bits <<= 6;
-      if (text[i + j] == '=') {
-        ++padding;
-      } else {
-        if (padding > 0) throw std::runtime_error("base64 data after padding");
-        bits |= static_cast<std::uint32_t>(value_of(text[i + j]));
-      }
-    }
-    out.push_back(static_cast<char>((bits >> 16) & 0xFF));
-    if (padding < 2) out.push_back(static_cast<char>((bits >> 8) & 0xFF));
-    if (padding < 1) out.push_back(static_cast<char>(bits & 0xFF));
-  }
-  return out;
 }
 
 /// One `<DataArray ...>text</DataArray>` element: its attributes and its text, trimmed.

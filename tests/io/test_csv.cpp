@@ -16,8 +16,8 @@ namespace sinew::io {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::read_whole_file;
-using testing::ScratchDirectory;
+using testing::read_text;
+using testing::TempDir;
 
 /// Splits CSV text into records of fields (RFC 4180: quoted fields may hold commas, doubled
 /// quotes and line breaks).
@@ -57,52 +57,52 @@ std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
 }
 
 TEST(Csv, HeaderIsWrittenWithTheFirstFlush) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   CsvTable table(scratch.file("log/steps.csv"), {"step", "time", "note"});
   EXPECT_EQ(table.columns(), (std::vector<std::string>{"step", "time", "note"}));
   EXPECT_EQ(table.rows(), 0u);
   table.flush();
-  EXPECT_EQ(read_whole_file(table.path()), "step,time,note\n");
+  EXPECT_EQ(read_text(table.path()), "step,time,note\n");
 }
 
 TEST(Csv, EachAddRowRewritesTheWholeFile) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   CsvTable table(scratch.file("steps.csv"), {"step", "time", "status"});
   table.add_row({1LL, 0.5, std::string("ok")});
-  EXPECT_EQ(read_whole_file(table.path()), "step,time,status\n1,0.5,ok\n");
+  EXPECT_EQ(read_text(table.path()), "step,time,status\n1,0.5,ok\n");
   table.add_row({2LL, 1.0, std::string("cut back")});
-  EXPECT_EQ(read_whole_file(table.path()), "step,time,status\n1,0.5,ok\n2,1,cut back\n");
+  EXPECT_EQ(read_text(table.path()), "step,time,status\n1,0.5,ok\n2,1,cut back\n");
   EXPECT_EQ(table.rows(), 2u);
 }
 
 TEST(Csv, AppendWritesOnlyOnFlush) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   CsvTable table(scratch.file("contacts.csv"), {"pair", "force"});
   table.append({0LL, 1.5});
   table.append({1LL, -2.5});
   EXPECT_FALSE(fs::exists(table.path()));
   table.flush();
-  EXPECT_EQ(read_whole_file(table.path()), "pair,force\n0,1.5\n1,-2.5\n");
+  EXPECT_EQ(read_text(table.path()), "pair,force\n0,1.5\n1,-2.5\n");
 }
 
 TEST(Csv, IntegersArePlain) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   CsvTable table(scratch.file("ints.csv"), {"n"});
   table.add_row({0LL});
   table.add_row({-42LL});
   table.add_row({std::numeric_limits<long long>::max()});
   table.add_row({std::numeric_limits<long long>::min()});
-  EXPECT_EQ(read_whole_file(table.path()),
+  EXPECT_EQ(read_text(table.path()),
             "n\n0\n-42\n9223372036854775807\n-9223372036854775808\n");
 }
 
 TEST(Csv, StringsAreQuotedOnlyWhenNeeded) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   const std::vector<std::string> texts = {
       "plain", "with space", "a,b", "say \"hi\"", "two\nlines", "cr\rhere", "", "\"", "'single'"};
   CsvTable table(scratch.file("strings.csv"), {"text", "header, with comma"});
   for (const std::string& text : texts) table.add_row({text, 0LL});
-  const std::string content = read_whole_file(table.path());
+  const std::string content = read_text(table.path());
   EXPECT_EQ(content.substr(0, content.find('\n')), "text,\"header, with comma\"");
   EXPECT_NE(content.find("\nplain,0\n"), std::string::npos);
   EXPECT_NE(content.find("\nwith space,0\n"), std::string::npos);
@@ -134,10 +134,10 @@ TEST(Csv, DoublesReadBackExactly) {
                                       -0.0,
                                       std::nextafter(1.0, 2.0),
                                       123456789.123456789};
-  ScratchDirectory scratch;
+  TempDir scratch;
   CsvTable table(scratch.file("doubles.csv"), {"value"});
   for (const double value : values) table.add_row({value});
-  const auto records = parse_csv(read_whole_file(table.path()));
+  const auto records = parse_csv(read_text(table.path()));
   ASSERT_EQ(records.size(), values.size() + 1);
   for (std::size_t i = 0; i < values.size(); ++i) {
     ASSERT_EQ(records[i + 1].size(), 1u);
@@ -148,11 +148,11 @@ TEST(Csv, DoublesReadBackExactly) {
 }
 
 TEST(Csv, NonFiniteDoublesAreWrittenAsStrtodReadsThem) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   CsvTable table(scratch.file("nonfinite.csv"), {"a", "b", "c"});
   table.add_row({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
                  -std::numeric_limits<double>::infinity()});
-  const auto records = parse_csv(read_whole_file(table.path()));
+  const auto records = parse_csv(read_text(table.path()));
   ASSERT_EQ(records.size(), 2u);
   EXPECT_TRUE(std::isnan(std::strtod(records[1][0].c_str(), nullptr)));
   EXPECT_EQ(std::strtod(records[1][1].c_str(), nullptr), std::numeric_limits<double>::infinity());
@@ -160,7 +160,7 @@ TEST(Csv, NonFiniteDoublesAreWrittenAsStrtodReadsThem) {
 }
 
 TEST(Csv, WrongRowLengthThrowsAndKeepsTheTable) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   CsvTable table(scratch.file("steps.csv"), {"step", "time"});
   table.add_row({1LL, 0.5});
   try {
@@ -173,17 +173,17 @@ TEST(Csv, WrongRowLengthThrowsAndKeepsTheTable) {
   }
   EXPECT_THROW(table.append({2LL, 1.0, std::string("extra")}), Error);
   EXPECT_EQ(table.rows(), 1u);
-  EXPECT_EQ(read_whole_file(table.path()), "step,time\n1,0.5\n");
+  EXPECT_EQ(read_text(table.path()), "step,time\n1,0.5\n");
 }
 
 TEST(Csv, NoColumnsOrDuplicateColumnsAreErrors) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   EXPECT_THROW(CsvTable(scratch.file("a.csv"), {}), Error);
   EXPECT_THROW(CsvTable(scratch.file("b.csv"), {"x", "y", "x"}), Error);
 }
 
 TEST(Csv, UnwritablePathThrowsNamingIt) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   const std::string directory_in_the_way = scratch.file("table.csv");
   fs::create_directories(directory_in_the_way + "/inside");
   CsvTable table(directory_in_the_way, {"x"});

@@ -19,11 +19,11 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::decode_binary_array;
-using testing::read_whole_file;
+using testing::read_text;
 using testing::scan_attributes;
 using testing::scan_data_arrays;
 using testing::ScannedArray;
-using testing::ScratchDirectory;
+using testing::TempDir;
 
 /// Two tets sharing a face, plus two boundary triangles; 5 nodes.
 VtuData small_mixed_mesh() {
@@ -94,11 +94,11 @@ void expect_float64_rows(const ScannedArray& array, const Eigen::MatrixXd& expec
 }
 
 TEST(Vtu, MixedMeshRoundTripsEveryArrayExactly) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   const VtuData data = small_mixed_mesh();
   const std::string path = scratch.file("out/mesh.vtu");
   write_vtu(path, data);
-  const std::string xml = read_whole_file(path);
+  const std::string xml = read_text(path);
 
   ASSERT_EQ(xml.rfind("<?xml", 0), 0u);
   const std::size_t file_tag = xml.find("<VTKFile");
@@ -142,13 +142,13 @@ TEST(Vtu, MixedMeshRoundTripsEveryArrayExactly) {
 }
 
 TEST(Vtu, TetsOnlyAndTrianglesOnlyAndEmptyMeshesAreWritten) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   VtuData tets_only = small_mixed_mesh();
   tets_only.triangles.resize(0, 3);
   tets_only.cell_fields.clear();
   tets_only.int_cell_fields.clear();
   write_vtu(scratch.file("tets.vtu"), tets_only);
-  auto arrays = scan_data_arrays(read_whole_file(scratch.file("tets.vtu")));
+  auto arrays = scan_data_arrays(read_text(scratch.file("tets.vtu")));
   EXPECT_EQ(decode_binary_array<std::uint8_t>(find_array(arrays, "Cells", "types")),
             (std::vector<std::uint8_t>{10, 10}));
 
@@ -157,21 +157,21 @@ TEST(Vtu, TetsOnlyAndTrianglesOnlyAndEmptyMeshesAreWritten) {
   triangles_only.cell_fields.clear();
   triangles_only.int_cell_fields.clear();
   write_vtu(scratch.file("triangles.vtu"), triangles_only);
-  arrays = scan_data_arrays(read_whole_file(scratch.file("triangles.vtu")));
+  arrays = scan_data_arrays(read_text(scratch.file("triangles.vtu")));
   EXPECT_EQ(decode_binary_array<std::int64_t>(find_array(arrays, "Cells", "offsets")),
             (std::vector<std::int64_t>{3, 6}));
 
   write_vtu(scratch.file("empty.vtu"), VtuData{});
-  arrays = scan_data_arrays(read_whole_file(scratch.file("empty.vtu")));
+  arrays = scan_data_arrays(read_text(scratch.file("empty.vtu")));
   EXPECT_TRUE(decode_binary_array<double>(find_array(arrays, "Points", "Points")).empty());
 }
 
 TEST(Vtu, FieldNamesAreXmlEscaped) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   VtuData data = small_mixed_mesh();
   data.point_fields[0].name = "u<\"&'>";
   write_vtu(scratch.file("escaped.vtu"), data);
-  const std::string xml = read_whole_file(scratch.file("escaped.vtu"));
+  const std::string xml = read_text(scratch.file("escaped.vtu"));
   EXPECT_NE(xml.find("Name=\"u&lt;&quot;&amp;&apos;&gt;\""), std::string::npos);
 }
 
@@ -188,7 +188,7 @@ std::string error_message(Write write) {
 }
 
 TEST(Vtu, ShapeMismatchesNameTheFieldAndWriteNothing) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   const std::string path = scratch.file("bad.vtu");
   auto expect_error = [&](const VtuData& data, const std::vector<std::string>& fragments) {
     const std::string message = error_message([&] { write_vtu(path, data); });
@@ -298,7 +298,7 @@ TEST(Vtu, MeshioReadsTheFile) {
       << "/usr/bin/python3 cannot import meshio (Debian package python3-meshio). "
          "Run scripts/install-deps.sh to install the project's dependencies.";
 
-  ScratchDirectory scratch;
+  TempDir scratch;
   const VtuData data = small_mixed_mesh();
   const std::string vtu_path = scratch.file("mesh.vtu");
   const std::string summary_path = scratch.file("summary.txt");
@@ -383,7 +383,7 @@ struct PvdEntry {
 
 /// Checks the collection's frame and returns its DataSet entries in document order.
 std::vector<PvdEntry> read_pvd(const std::string& path) {
-  const std::string xml = read_whole_file(path);
+  const std::string xml = read_text(path);
   EXPECT_EQ(xml.rfind("<?xml", 0), 0u);
   EXPECT_NE(xml.find("<VTKFile type=\"Collection\" version=\"0.1\""), std::string::npos);
   const std::size_t open = xml.find("<Collection>");
@@ -406,7 +406,7 @@ std::vector<PvdEntry> read_pvd(const std::string& path) {
 }
 
 TEST(Pvd, WellFormedAfterEveryAddWithPathsRelativeToThePvd) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   PvdSeries series(scratch.file("results/run.pvd"));
   EXPECT_EQ(series.path(), scratch.file("results/run.pvd"));
 
@@ -433,7 +433,7 @@ TEST(Pvd, WellFormedAfterEveryAddWithPathsRelativeToThePvd) {
 }
 
 TEST(Pvd, TimesStayInOrder) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   PvdSeries series(scratch.file("run.pvd"));
   series.add(1.0, "a.vtu");
   series.add(3.0, "c.vtu");
@@ -451,7 +451,7 @@ TEST(Pvd, TimesStayInOrder) {
 }
 
 TEST(Pvd, NonFiniteTimeOrEmptyPathIsAnError) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   PvdSeries series(scratch.file("run.pvd"));
   EXPECT_THROW(series.add(std::numeric_limits<double>::quiet_NaN(), "a.vtu"), Error);
   EXPECT_THROW(series.add(std::numeric_limits<double>::infinity(), "a.vtu"), Error);
@@ -461,7 +461,7 @@ TEST(Pvd, NonFiniteTimeOrEmptyPathIsAnError) {
 }
 
 TEST(Pvd, FailedWriteDoesNotKeepTheEntry) {
-  ScratchDirectory scratch;
+  TempDir scratch;
   const std::string pvd_path = scratch.file("run.pvd");
   fs::create_directories(pvd_path + "/blocker");  // a non-empty directory where the pvd should go
   PvdSeries series(pvd_path);

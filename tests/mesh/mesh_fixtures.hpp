@@ -1,6 +1,7 @@
 #pragma once
 /// @file mesh_fixtures.hpp
-/// Hand-built meshes and geometric measures for the mesh tests.
+/// Shuffled meshes and geometric measures for the mesh tests (and, from tests/support,
+/// box_mesh, TempDir and write_text).
 
 #include <algorithm>
 #include <array>
@@ -11,48 +12,15 @@
 #include <string>
 
 #include "sinew/mesh/tet_mesh.hpp"
+#include "support/box_mesh.hpp"
+#include "support/files.hpp"
+#include "support/temp_dir.hpp"
 
 namespace sinew::mesh::testing {
 
-/// A box [0, nx] x [0, ny] x [0, nz] (times `spacing`) of unit cubes, each split into six
-/// positively oriented tets around its main diagonal (Kuhn subdivision, conforming).
-inline TetMesh structured_box(int nx, int ny, int nz, double spacing = 1.0) {
-  TetMesh mesh;
-  const auto node = [&](int i, int j, int k) {
-    return static_cast<Index>(i + (nx + 1) * (j + (ny + 1) * k));
-  };
-  mesh.rest.resize((nx + 1) * (ny + 1) * (nz + 1), 3);
-  for (int k = 0; k <= nz; ++k) {
-    for (int j = 0; j <= ny; ++j) {
-      for (int i = 0; i <= nx; ++i)
-        mesh.rest.row(node(i, j, k)) << i * spacing, j * spacing, k * spacing;
-    }
-  }
-  // Paths from corner (0,0,0) to (1,1,1) along the 6 orderings of the axes.
-  const std::array<std::array<int, 3>, 6> axis_orders = {
-      {{{0, 1, 2}}, {{0, 2, 1}}, {{1, 0, 2}}, {{1, 2, 0}}, {{2, 0, 1}}, {{2, 1, 0}}}};
-  mesh.tets.resize(6 * nx * ny * nz, 4);
-  Index t = 0;
-  for (int k = 0; k < nz; ++k) {
-    for (int j = 0; j < ny; ++j) {
-      for (int i = 0; i < nx; ++i) {
-        for (const auto& order : axis_orders) {
-          std::array<int, 3> corner = {i, j, k};
-          mesh.tets(t, 0) = node(corner[0], corner[1], corner[2]);
-          for (int step = 0; step < 3; ++step) {
-            ++corner[static_cast<std::size_t>(order[static_cast<std::size_t>(step)])];
-            mesh.tets(t, step + 1) = node(corner[0], corner[1], corner[2]);
-          }
-          ++t;
-        }
-      }
-    }
-  }
-  orient_positively(mesh.rest, mesh.tets);
-  mesh.region = IndexVector::Zero(mesh.tets.rows());
-  mesh.region_names = {"default"};
-  return mesh;
-}
+using sinew::testing::box_mesh;
+using sinew::testing::TempDir;
+using sinew::testing::write_text;
 
 /// The same mesh with nodes renumbered and tets reordered at random, each tet's nodes rotated
 /// by an even permutation (orientation kept).
@@ -138,26 +106,5 @@ inline bool is_closed_oriented_surface(const Triangles& triangles) {
   }
   return true;
 }
-
-/// A fresh directory under the system temp dir, removed with the object.
-class TemporaryDirectory {
- public:
-  explicit TemporaryDirectory(const std::string& stem) {
-    std::random_device entropy;
-    path_ = std::filesystem::temp_directory_path() /
-            (stem + "-" + std::to_string(entropy()) + "-" + std::to_string(entropy()));
-    std::filesystem::create_directories(path_);
-  }
-  ~TemporaryDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TemporaryDirectory(const TemporaryDirectory&) = delete;
-  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
-};
 
 }  // namespace sinew::mesh::testing

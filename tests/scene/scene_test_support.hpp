@@ -1,6 +1,7 @@
 #pragma once
 /// @file scene_test_support.hpp
-/// Helpers shared by the scene tests: fixture paths, a minimal valid scene, error capture.
+/// Helpers shared by the scene tests: fixture paths, a minimal valid scene, error capture (and
+/// TempDir, from support/temp_dir.hpp).
 
 #include <gtest/gtest.h>
 
@@ -10,8 +11,11 @@
 
 #include "sinew/core/error.hpp"
 #include "sinew/scene/load_scene.hpp"
+#include "support/temp_dir.hpp"
 
 namespace sinew::scene::testing {
+
+using sinew::testing::TempDir;
 
 inline std::string data_directory() { return std::string(SINEW_SOURCE_DIR) + "/tests/scene/data"; }
 
@@ -36,6 +40,18 @@ inline std::string parse_error(const nlohmann::json& scene, const std::string& b
     return e.what();
   }
   ADD_FAILURE() << "parse_scene accepted an invalid scene: " << scene.dump();
+  return "";
+}
+
+/// The InputError message load_scene_file throws for the file `path`; an empty string (and a
+/// test failure) when it does not throw.
+inline std::string load_error(const std::string& path) {
+  try {
+    load_scene_file(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "load_scene_file accepted " << path;
   return "";
 }
 

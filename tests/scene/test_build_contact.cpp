@@ -11,12 +11,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "mesh/mesh_fixtures.hpp"
 #include "scene/scene_test_support.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/scene/build_contact.hpp"
 #include "sinew/scene/build_problem.hpp"
 #include "sinew/scene/load_scene.hpp"
+#include "support/box_mesh.hpp"
 
 namespace sinew::scene {
 namespace {
@@ -165,7 +165,8 @@ TEST(BuildContact, DepthFromAFile) {
   const SceneConfig config = parse_scene(scene, "");
   const fem::Problem problem = build_problem(config);
   const Index nodes = problem.bodies[0].num_nodes;
-  const auto path = std::filesystem::temp_directory_path() / "sinew_test_depth.txt";
+  const testing::TempDir directory("sinew-depth-file");
+  const auto path = directory / "depth.txt";
   {
     std::ofstream out(path);
     out << "# depth per node\n";
@@ -191,7 +192,6 @@ TEST(BuildContact, DepthFromAFile) {
     out << "1 nan\n";
   }
   EXPECT_THAT(build_contact_error(scene), HasSubstr("must be finite"));
-  std::filesystem::remove(path);
 }
 
 /// A Gmsh 2.2 ASCII file of the box [0,1]^2 x [0,0.5] (structured, 18 nodes), node tags
@@ -199,7 +199,7 @@ TEST(BuildContact, DepthFromAFile) {
 /// "depth" = z, "temperature" = x - 1 (negative at x < 1), "nan_depth" = z but NaN at
 /// (1, 1, 0.5), "partial" = z without a value at (0, 0, 0).
 void write_box_with_fields(const std::string& path) {
-  const mesh::TetMesh box = mesh::testing::structured_box(2, 2, 1, 0.5);
+  const mesh::TetMesh box = sinew::testing::box_mesh(2, 2, 1, 0.5);
   const auto tag = [](Index v) { return 1000 - 7 * v; };
   std::ofstream out(path);
   out.precision(17);
@@ -250,7 +250,7 @@ json file_box_scene(const std::string& msh_path, const std::string& depth_field)
 }
 
 TEST(BuildContact, DepthFromANodeFieldOfTheMeshFile) {
-  const mesh::testing::TemporaryDirectory directory("sinew-depth-field");
+  const testing::TempDir directory("sinew-depth-field");
   const std::string path = directory.file("box.msh");
   write_box_with_fields(path);
   const json scene = file_box_scene(path, "depth");
@@ -269,7 +269,7 @@ TEST(BuildContact, DepthFromANodeFieldOfTheMeshFile) {
 }
 
 TEST(BuildContact, DepthFieldErrorsNameThePathAndTheField) {
-  const mesh::testing::TemporaryDirectory directory("sinew-depth-field");
+  const testing::TempDir directory("sinew-depth-field");
   const std::string path = directory.file("box.msh");
   write_box_with_fields(path);
   EXPECT_THAT(build_contact_error(file_box_scene(path, "dpeth")),

@@ -5,10 +5,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 
 #include "scene/scene_test_support.hpp"
@@ -19,40 +17,14 @@ namespace {
 
 using nlohmann::json;
 using testing::data_directory;
+using testing::load_error;
 using testing::minimal_scene;
 using testing::parse_error;
+using testing::TempDir;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
 constexpr double kPi = std::numbers::pi;
-
-/// A scratch file deleted at the end of the test.
-class TemporaryFile {
- public:
-  explicit TemporaryFile(const std::string& text, const std::string& name = "scene.json") {
-    directory_ = std::filesystem::temp_directory_path() /
-                 ("sinew-scene-test-" + std::to_string(reinterpret_cast<std::uintptr_t>(this)));
-    std::filesystem::create_directories(directory_);
-    path_ = (directory_ / name).string();
-    std::ofstream(path_) << text;
-  }
-  ~TemporaryFile() { std::filesystem::remove_all(directory_); }
-  const std::string& path() const { return path_; }
-
- private:
-  std::filesystem::path directory_;
-  std::string path_;
-};
-
-std::string load_error(const std::string& path) {
-  try {
-    load_scene_file(path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "load_scene_file accepted " << path;
-  return "";
-}
 
 TEST(LoadScene, FullExample) {
   const SceneConfig scene = load_scene_file(data_directory() + "/full_example.json");
@@ -268,35 +240,39 @@ TEST(LoadSceneErrors, MissingSceneFile) {
 }
 
 TEST(LoadSceneErrors, MalformedJsonNamesFileLineAndColumn) {
-  const TemporaryFile file("{\n  \"units\": \"m\",\n  \"bodies\": [1, 2,, 3]\n}\n");
-  const std::string message = load_error(file.path());
-  EXPECT_THAT(message, StartsWith(file.path() + ":3:19: malformed JSON: "));
+  const TempDir directory;
+  const std::string path = directory.write("scene.json", "{\n  \"units\": \"m\",\n  \"bodies\": [1, 2,, 3]\n}\n");
+  const std::string message = load_error(path);
+  EXPECT_THAT(message, StartsWith(path + ":3:19: malformed JSON: "));
   EXPECT_THAT(message, HasSubstr("parse error at line 3, column 19"));  // nlohmann agrees
 }
 
 TEST(LoadSceneErrors, MalformedJsonPositionAgreesWithTheParser) {
   for (const std::string text : {"", "{", "{\"units\": ", "{\n\n  \"a\": tru\n}", "{\"a\": 1}\n  x", "[1, 2]\n\n  }"}) {
-    const TemporaryFile file(text);
-    const std::string message = load_error(file.path());
+    const TempDir directory;
+    const std::string path = directory.write("scene.json", text);
+    const std::string message = load_error(path);
     const std::size_t at = message.find("parse error at line ");
     ASSERT_NE(at, std::string::npos) << message;
     int line = 0, column = 0;
     ASSERT_EQ(std::sscanf(message.c_str() + at, "parse error at line %d, column %d", &line, &column), 2) << message;
-    EXPECT_THAT(message, StartsWith(file.path() + ":" + std::to_string(line) + ":" + std::to_string(column) + ": "))
+    EXPECT_THAT(message, StartsWith(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": "))
         << "for " << text;
   }
 }
 
 TEST(LoadSceneErrors, DuplicateKeyInFile) {
-  const TemporaryFile file(R"({"units": "m", "solver": {"increments": 2, "increments": 3}, "bodies": []})");
-  EXPECT_EQ(load_error(file.path()), "solver.increments: duplicate key\n(in scene file " + file.path() + ")");
+  const TempDir directory;
+  const std::string path = directory.write("scene.json", R"({"units": "m", "solver": {"increments": 2, "increments": 3}, "bodies": []})");
+  EXPECT_EQ(load_error(path), "solver.increments: duplicate key\n(in scene file " + path + ")");
 }
 
 TEST(LoadSceneErrors, FileErrorsEndWithTheFileName) {
   json scene = minimal_scene();
   scene["solver"] = {{"increments", 0}};
-  const TemporaryFile file(scene.dump(2));
-  EXPECT_EQ(load_error(file.path()), "solver.increments: must be >= 1, got 0\n(in scene file " + file.path() + ")");
+  const TempDir directory;
+  const std::string path = directory.write("scene.json", scene.dump(2));
+  EXPECT_EQ(load_error(path), "solver.increments: must be >= 1, got 0\n(in scene file " + path + ")");
 }
 
 TEST(LoadSceneErrors, UnknownKeyWithSuggestion) {

@@ -7,11 +7,10 @@
 
 #include <sys/stat.h>
 
-#include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
+#include "scene/scene_test_support.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/scene/load_scene.hpp"
 #include "sinew/scene/scene_text.hpp"
@@ -20,36 +19,8 @@ namespace sinew::scene {
 namespace {
 
 using ::testing::HasSubstr;
-
-/// A scratch directory deleted at the end of the test.
-class TemporaryDirectory {
- public:
-  TemporaryDirectory() {
-    path_ = std::filesystem::temp_directory_path() /
-            ("sinew-scene-text-test-" + std::to_string(reinterpret_cast<std::uintptr_t>(this)));
-    std::filesystem::create_directories(path_);
-  }
-  ~TemporaryDirectory() { std::filesystem::remove_all(path_); }
-  std::string file(const std::string& name, const std::string& text) const {
-    const std::string path = (path_ / name).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-  std::string path(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
-};
-
-std::string load_error(const std::string& path) {
-  try {
-    load_scene_file(path);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "load_scene_file accepted " << path;
-  return "";
-}
+using testing::load_error;
+using testing::TempDir;
 
 std::string repeat(const std::string& piece, std::size_t count) {
   std::string text;
@@ -61,15 +32,15 @@ std::string repeat(const std::string& piece, std::size_t count) {
 // Without the depth bound the parser's callback kept a path per open bracket: 100,000 levels
 // took 36 s and 6.6 GB before std::bad_alloc. The scan stops at the 65th bracket.
 TEST(SceneText, DeeplyNestedArraysAreRefusedAtTheFirstBracketTooDeep) {
-  const TemporaryDirectory directory;
-  const std::string path = directory.file("deep.json", repeat("[", 100000));
+  const TempDir directory;
+  const std::string path = directory.write("deep.json", repeat("[", 100000));
   const std::string message = load_error(path);
   EXPECT_THAT(message, HasSubstr(path + ":1:65: JSON nested deeper than 64 levels"));
 }
 
 TEST(SceneText, DeeplyNestedObjectsAreRefusedWithLineAndColumn) {
-  const TemporaryDirectory directory;
-  const std::string path = directory.file("deep.json", "\n" + repeat("{\"a\":", 100000));
+  const TempDir directory;
+  const std::string path = directory.write("deep.json", "\n" + repeat("{\"a\":", 100000));
   EXPECT_THAT(load_error(path), HasSubstr(path + ":2:321: JSON nested deeper than 64 levels"));
 }
 
@@ -84,8 +55,8 @@ TEST(SceneText, BracketsInsideStringsDoNotCount) {
 }
 
 TEST(SceneText, AFifoIsRefusedWithoutBeingOpened) {
-  const TemporaryDirectory directory;
-  const std::string path = directory.path("scene.fifo");
+  const TempDir directory;
+  const std::string path = directory.file("scene.fifo");
   ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
   // Opening the FIFO for reading would block until a writer appears: this returns only
   // because the file type is checked first.
@@ -93,15 +64,15 @@ TEST(SceneText, AFifoIsRefusedWithoutBeingOpened) {
 }
 
 TEST(SceneText, ADirectoryIsRefused) {
-  const TemporaryDirectory directory;
-  const std::string path = directory.path("scenes");
+  const TempDir directory;
+  const std::string path = directory.file("scenes");
   std::filesystem::create_directories(path);
   EXPECT_THAT(load_error(path), HasSubstr(path + ": is not a regular file (it is a directory)"));
 }
 
 TEST(SceneText, AFileOverTheSizeLimitIsRefused) {
-  const TemporaryDirectory directory;
-  const std::string path = directory.file("big.json", std::string(2000, ' ') + "{}");
+  const TempDir directory;
+  const std::string path = directory.write("big.json", std::string(2000, ' ') + "{}");
   SceneTextLimits limits;
   limits.max_bytes = 1000;
   try {
@@ -112,7 +83,7 @@ TEST(SceneText, AFileOverTheSizeLimitIsRefused) {
   }
   EXPECT_EQ(read_scene_text(path).size(), 2002u);
   // The default limit, 16 MiB, through load_scene_file.
-  const std::string huge = directory.file("huge.json", std::string((16u << 20) + 1, ' '));
+  const std::string huge = directory.write("huge.json", std::string((16u << 20) + 1, ' '));
   EXPECT_THAT(load_error(huge), HasSubstr("scene file too large"));
 }
 

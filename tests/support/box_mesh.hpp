@@ -10,17 +10,19 @@
 
 namespace sinew::testing {
 
-inline mesh::TetMesh box_mesh(int nx, int ny, int nz, const Vector3& lo, const Vector3& hi) {
+namespace detail {
+
+/// The grid of nx x ny x nz cubes whose node (i, j, k) is at position(i, j, k), each cube split
+/// into six tets along monotone paths from its corner (0,0,0) to (1,1,1) (Kuhn subdivision,
+/// conforming); a negatively oriented tet gets its last two nodes swapped.
+template <typename Position>
+mesh::TetMesh kuhn_box(int nx, int ny, int nz, const Position& position) {
   mesh::TetMesh m;
   auto id = [&](int i, int j, int k) { return static_cast<Index>(i + (nx + 1) * (j + (ny + 1) * k)); };
   m.rest.resize((nx + 1) * (ny + 1) * (nz + 1), 3);
   for (int k = 0; k <= nz; ++k)
     for (int j = 0; j <= ny; ++j)
-      for (int i = 0; i <= nx; ++i) {
-        const Vector3 s(double(i) / nx, double(j) / ny, double(k) / nz);
-        m.rest.row(id(i, j, k)) = (lo.array() + s.array() * (hi - lo).array()).matrix().transpose();
-      }
-  // Kuhn subdivision: tets along monotone paths from corner (0,0,0) to (1,1,1).
+      for (int i = 0; i <= nx; ++i) m.rest.row(id(i, j, k)) = position(i, j, k).transpose();
   const std::array<std::array<int, 3>, 6> orders{{{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
   m.tets.resize(6 * nx * ny * nz, 4);
   Index t = 0;
@@ -40,6 +42,22 @@ inline mesh::TetMesh box_mesh(int nx, int ny, int nz, const Vector3& lo, const V
   m.region = IndexVector::Zero(m.tets.rows());
   m.region_names = {"default"};
   return m;
+}
+
+}  // namespace detail
+
+/// The box [lo, hi] divided into nx x ny x nz equal cells.
+inline mesh::TetMesh box_mesh(int nx, int ny, int nz, const Vector3& lo, const Vector3& hi) {
+  return detail::kuhn_box(nx, ny, nz, [&](int i, int j, int k) -> Vector3 {
+    const Vector3 s(double(i) / nx, double(j) / ny, double(k) / nz);
+    return (lo.array() + s.array() * (hi - lo).array()).matrix();
+  });
+}
+
+/// The box [0, nx] x [0, ny] x [0, nz] times `spacing`: node (i, j, k) at exactly
+/// (i, j, k) * spacing.
+inline mesh::TetMesh box_mesh(int nx, int ny, int nz, double spacing = 1.0) {
+  return detail::kuhn_box(nx, ny, nz, [&](int i, int j, int k) { return Vector3(i * spacing, j * spacing, k * spacing); });
 }
 
 /// Nodes of `m` whose coordinate `axis` equals `value` (within 1e-12).

@@ -16,6 +16,7 @@ namespace {
 
 using ::testing::AllOf;
 using ::testing::HasSubstr;
+using testing::write_text;
 namespace occ = gmsh::model::occ;
 
 struct MshFormat {
@@ -78,7 +79,7 @@ void PrintTo(const MshFormat& format, std::ostream* out) { *out << format.name; 
 class ReadMshFormat : public ::testing::TestWithParam<MshFormat> {};
 
 TEST_P(ReadMshFormat, RegionsFaceSetsAndNodeSets) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file(GetParam().name + ".msh");
   const std::size_t gmsh_tets = write_two_cube_model(path, GetParam());
 
@@ -182,7 +183,7 @@ void append_node_data(const std::string& path, const MshFormat& format) {
 }
 
 TEST_P(ReadMshFormat, ScalarNodeDataBecomeNodeFields) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file(GetParam().name + "_fields.msh");
   write_two_cube_model(path, GetParam());
   append_node_data(path, GetParam());
@@ -209,10 +210,6 @@ INSTANTIATE_TEST_SUITE_P(Formats, ReadMshFormat,
                                            MshFormat{"v41_binary", 4.1, true}),
                          [](const auto& info) { return info.param.name; });
 
-void write_text(const std::string& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
 std::string read_msh_error(const std::string& path) {
   try {
     read_msh(path);
@@ -223,7 +220,7 @@ std::string read_msh_error(const std::string& path) {
 }
 
 TEST(ReadMsh, HandWrittenV22WithSparseTagsInvertedTetAndUnusedNode) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("hand.msh");
   // Two tets without physical groups, the second written with negative orientation; node 99
   // is used by no tet.
@@ -248,7 +245,7 @@ TEST(ReadMsh, HandWrittenV22WithSparseTagsInvertedTetAndUnusedNode) {
 }
 
 TEST(ReadMsh, NodeDataFollowTheNodeTagsAndTheFirstTimeStep) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("fields.msh");
   // Sparse tags listed out of order; node 99 is used by no tet. "depth" = 1 + x + 2y + 3z is
   // given in tag order 99, 50, ..., 10 at time step 3 (steps 0-2 are empty) and again, with
@@ -284,7 +281,7 @@ TEST(ReadMsh, NodeDataFollowTheNodeTagsAndTheFirstTimeStep) {
 }
 
 TEST(ReadMsh, WithoutNodeDataThereAreNoNodeFields) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("plain.msh");
   write_text(path,
              "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
@@ -296,7 +293,7 @@ TEST(ReadMsh, WithoutNodeDataThereAreNoNodeFields) {
 }
 
 TEST(ReadMsh, TetsOutsideEveryGroupFormTheDefaultRegion) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("partial.msh");
   write_text(path,
              "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
@@ -313,14 +310,14 @@ TEST(ReadMsh, TetsOutsideEveryGroupFormTheDefaultRegion) {
 }
 
 TEST(ReadMsh, MissingFileNamesThePath) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("nowhere.msh");
   EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr(path), HasSubstr("does not exist")));
   EXPECT_THAT(read_msh_error(directory.file("")), HasSubstr("not a regular file"));
 }
 
 TEST(ReadMsh, GarbageFileNamesThePath) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("garbage.msh");
   write_text(path, "this is not a mesh\n\x01\x02\x03 at all\n");
   // Never handed to Gmsh, which would parse it as a script.
@@ -329,7 +326,7 @@ TEST(ReadMsh, GarbageFileNamesThePath) {
 }
 
 TEST(ReadMsh, TruncatedFileNamesThePath) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("truncated.msh");
   write_text(path, "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 4 1 4\n3 1 0 4\n1\n");
   EXPECT_THAT(read_msh_error(path),
@@ -338,14 +335,14 @@ TEST(ReadMsh, TruncatedFileNamesThePath) {
 }
 
 TEST(ReadMsh, EmptyFileIsNotAnMshFile) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("empty.msh");
   write_text(path, "");
   EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr(path), HasSubstr("is not a Gmsh MSH file")));
 }
 
 TEST(ReadMsh, OtherVolumeElementsAreRejectedRatherThanDropped) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("hex.msh");
   write_text(path,
              "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
@@ -357,7 +354,7 @@ TEST(ReadMsh, OtherVolumeElementsAreRejectedRatherThanDropped) {
 }
 
 TEST(ReadMsh, SecondOrderTetsAreRejected) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("quadratic.msh");
   {
     GmshSession session;
@@ -374,7 +371,7 @@ TEST(ReadMsh, SecondOrderTetsAreRejected) {
 }
 
 TEST(ReadMsh, SurfaceMeshIsRejectedWithTheElementTypesFound) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("surface.msh");
   {
     GmshSession session;
@@ -391,7 +388,7 @@ TEST(ReadMsh, SurfaceMeshIsRejectedWithTheElementTypesFound) {
 }
 
 TEST(ReadMsh, InvalidMeshFailsValidationNamingTheFile) {
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("duplicate.msh");
   write_text(path,
              "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
@@ -404,7 +401,7 @@ TEST(ReadMsh, InvalidMeshFailsValidationNamingTheFile) {
 TEST(ReadMsh, FoldedTetIsRejectedAsInverted) {
   // Tets 1 and 2 share the face (1, 2, 3) but both apexes lie above it: tet 2 is inverted
   // relative to tet 1 and the mesh overlaps itself.
-  const testing::TemporaryDirectory directory("sinew-read-msh");
+  const testing::TempDir directory("sinew-read-msh");
   const std::string path = directory.file("folded.msh");
   write_text(path,
              "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"

@@ -1,4 +1,4 @@
-/// @file read_msh_safety_test.cpp
+/// @file test_read_msh_safety.cpp
 /// read_msh on hostile or damaged files: Gmsh scripts, FIFOs, malformed headers and sections,
 /// counts larger than the file; each must end in an InputError that says what is wrong.
 
@@ -19,11 +19,8 @@ namespace {
 
 using ::testing::AllOf;
 using ::testing::HasSubstr;
+using testing::write_text;
 using ::testing::Not;
-
-void write_bytes(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
-}
 
 std::string read_msh_error(const std::string& path) {
   try {
@@ -45,10 +42,10 @@ const std::string kTetV22 =
     "$Elements\n1\n1 4 2 0 1 1 2 3 4\n$EndElements\n";
 
 TEST(ReadMshSafety, ScriptNamedMshIsNotRun) {
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string marker = directory.file("pwned");
   const std::string path = directory.file("evil.msh");
-  write_bytes(path, script_touching(marker));
+  write_text(path, script_touching(marker));
   EXPECT_THAT(read_msh_error(path),
               AllOf(HasSubstr("mesh file \"" + path + "\""), HasSubstr("is not a Gmsh MSH file"),
                     HasSubstr("$MeshFormat"), HasSubstr("never runs Gmsh scripts")));
@@ -56,51 +53,51 @@ TEST(ReadMshSafety, ScriptNamedMshIsNotRun) {
 }
 
 TEST(ReadMshSafety, GeoExtensionIsRefusedEvenWithAnMshHeader) {
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string marker = directory.file("pwned");
   const std::string script = directory.file("evil.geo");
-  write_bytes(script, script_touching(marker));
+  write_text(script, script_touching(marker));
   EXPECT_THAT(read_msh_error(script), AllOf(HasSubstr(script), HasSubstr("extension \".geo\""),
                                             HasSubstr("*.msh")));
   // A genuine MSH file under another name is refused too: Gmsh picks its reader by extension.
   const std::string renamed = directory.file("tet.geo");
-  write_bytes(renamed, kTetV22);
+  write_text(renamed, kTetV22);
   EXPECT_THAT(read_msh_error(renamed), HasSubstr("extension \".geo\""));
   const std::string no_extension = directory.file("tet");
-  write_bytes(no_extension, kTetV22);
+  write_text(no_extension, kTetV22);
   EXPECT_THAT(read_msh_error(no_extension), HasSubstr("extension \"\""));
   EXPECT_FALSE(std::filesystem::exists(marker));
 }
 
 TEST(ReadMshSafety, ScriptAfterAnMshHeaderIsNotRun) {
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string marker = directory.file("pwned");
   const std::string path = directory.file("header_then_script.msh");
-  write_bytes(path, "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n" + script_touching(marker));
+  write_text(path, "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n" + script_touching(marker));
   EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr(path), HasSubstr("no $Nodes section")));
   // Leading blank lines would make Gmsh's first-line sniffing miss the header.
   const std::string blank_first = directory.file("blank_first.msh");
-  write_bytes(blank_first, "\n" + kTetV22 + script_touching(marker));
+  write_text(blank_first, "\n" + kTetV22 + script_touching(marker));
   EXPECT_THAT(read_msh_error(blank_first), HasSubstr("is not a Gmsh MSH file"));
   EXPECT_FALSE(std::filesystem::exists(marker));
 }
 
 TEST(ReadMshSafety, OptionFileBesideTheMeshIsNotRun) {
   // Gmsh, opening "tet.msh", also runs "tet.msh.opt" as a script when it exists.
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string marker = directory.file("pwned");
   const std::string path = directory.file("tet.msh");
-  write_bytes(path, kTetV22);
-  write_bytes(path + ".opt", script_touching(marker));
+  write_text(path, kTetV22);
+  write_text(path + ".opt", script_touching(marker));
   EXPECT_EQ(read_msh(path).num_tets(), 1);
   EXPECT_FALSE(std::filesystem::exists(marker));
 }
 
 TEST(ReadMshSafety, GmshMessagesNameTheUsersFile) {
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string path = directory.file("bad_entity.msh");
   // Passes sinew's checks; Gmsh rejects the element's unknown entity and names the file.
-  write_bytes(path,
+  write_text(path,
               "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
               "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n"
               "$Elements\n1 1 1 1\n3 9 4 1\n1 1 2 3 4\n$EndElements\n");
@@ -110,7 +107,7 @@ TEST(ReadMshSafety, GmshMessagesNameTheUsersFile) {
 }
 
 TEST(ReadMshSafety, FifoIsRefusedWithoutBlocking) {
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string path = directory.file("pipe.msh");
   ASSERT_EQ(mkfifo(path.c_str(), 0600), 0);
   // Opening a FIFO without a writer would block forever; the check must come first.
@@ -118,20 +115,20 @@ TEST(ReadMshSafety, FifoIsRefusedWithoutBlocking) {
 }
 
 TEST(ReadMshSafety, UnsupportedFormatHeaderIsNamed) {
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string path = directory.file("v3.msh");
-  write_bytes(path, "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n$Nodes\n0\n$EndNodes\n");
+  write_text(path, "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n$Nodes\n0\n$EndNodes\n");
   EXPECT_THAT(read_msh_error(path),
               AllOf(HasSubstr(path), HasSubstr("\"3.0 0 8\""), HasSubstr("2.2, 4.0 and 4.1")));
-  write_bytes(path, "$MeshFormat\n4.1 0 4\n$EndMeshFormat\n");
+  write_text(path, "$MeshFormat\n4.1 0 4\n$EndMeshFormat\n");
   EXPECT_THAT(read_msh_error(path), HasSubstr("data size 8"));
 }
 
 TEST(ReadMshSafety, NonFiniteCoordinateIsReportedAsSuch) {
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   for (const std::string value : {"inf", "nan", "1e400"}) {
     const std::string path = directory.file("nonfinite.msh");
-    write_bytes(path,
+    write_text(path,
                 "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
                 "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 " + value + " 1 1\n$EndNodes\n"
                 "$Elements\n2\n1 4 2 0 1 1 2 3 4\n2 4 2 0 1 2 3 5 4\n$EndElements\n");
@@ -143,9 +140,9 @@ TEST(ReadMshSafety, NonFiniteCoordinateIsReportedAsSuch) {
 }
 
 TEST(ReadMshSafety, DuplicateNodeTagIsReportedAsSuch) {
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string path = directory.file("duplicate_tag.msh");
-  write_bytes(path,
+  write_text(path,
               "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
               "$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n2 5 5 5\n$EndNodes\n"
               "$Elements\n2\n1 4 2 0 1 1 2 3 4\n2 4 2 0 1 2 3 5 4\n$EndElements\n");
@@ -154,9 +151,9 @@ TEST(ReadMshSafety, DuplicateNodeTagIsReportedAsSuch) {
 }
 
 TEST(ReadMshSafety, MissingEndNodesIsReportedAsAnUnclosedSection) {
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string path = directory.file("no_end_nodes.msh");
-  write_bytes(path,
+  write_text(path,
               "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
               "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
               "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n$EndElements\n");
@@ -164,7 +161,7 @@ TEST(ReadMshSafety, MissingEndNodesIsReportedAsAnUnclosedSection) {
               AllOf(HasSubstr(path), HasSubstr("$Nodes section is not closed by $EndNodes"),
                     Not(HasSubstr("no elements"))));
   // Cut off inside the $Elements section.
-  write_bytes(path,
+  write_text(path,
               "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
               "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n"
               "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n");
@@ -173,15 +170,15 @@ TEST(ReadMshSafety, MissingEndNodesIsReportedAsAnUnclosedSection) {
 
 TEST(ReadMshSafety, ElementWithAnUndefinedNodeTagIsReported) {
   // Gmsh 4.8 keeps such an element with a missing node and crashes when it is queried.
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string path = directory.file("undefined_node.msh");
-  write_bytes(path,
+  write_text(path,
               "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
               "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n"
               "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 18446744073709551615 4\n$EndElements\n");
   EXPECT_THAT(read_msh_error(path),
               AllOf(HasSubstr(path), HasSubstr("element 1 refers to node tag 18446744073709551615")));
-  write_bytes(path,
+  write_text(path,
               "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
               "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n"
               "$Elements\n1\n7 4 2 0 1 1 2 3 9\n$EndElements\n");
@@ -190,9 +187,9 @@ TEST(ReadMshSafety, ElementWithAnUndefinedNodeTagIsReported) {
 
 TEST(ReadMshSafety, UnknownElementTypeIsReported) {
   // Gmsh 4.8 aborts on an assertion when it meets an element type it does not know.
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string path = directory.file("unknown_type.msh");
-  write_bytes(path,
+  write_text(path,
               "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
               "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n"
               "$Elements\n1\n1 1028 2 0 1 1 2 3 4\n$EndElements\n");
@@ -201,23 +198,23 @@ TEST(ReadMshSafety, UnknownElementTypeIsReported) {
 
 TEST(ReadMshSafety, NodeDataForAnUndefinedNodeIsReported) {
   // Gmsh 4.8 indexes its storage with the tag and crashes.
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string path = directory.file("node_data.msh");
-  write_bytes(path, kTetV22 + "$NodeData\n1\n\"f\"\n1\n0\n3\n0\n1\n2\n1 0.5\n2147483647 1\n"
+  write_text(path, kTetV22 + "$NodeData\n1\n\"f\"\n1\n0\n3\n0\n1\n2\n1 0.5\n2147483647 1\n"
                               "$EndNodeData\n");
   EXPECT_THAT(read_msh_error(path),
               AllOf(HasSubstr(path), HasSubstr("$NodeData section gives a value for node tag 2147483647")));
   // A negative matrix size in an interpolation scheme (Gmsh 4.8 aborts on it).
-  write_bytes(path, kTetV22 + "$InterpolationScheme\n\"s\"\n1\n1\n1\n-2 2\n0 0\n0 0\n"
+  write_text(path, kTetV22 + "$InterpolationScheme\n\"s\"\n1\n1\n1\n-2 2\n0 0\n0 0\n"
                               "$EndInterpolationScheme\n");
   EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr("$InterpolationScheme"), HasSubstr("\"-2\"")));
 }
 
 TEST(ReadMshSafety, NegativePhysicalNameCountIsReported) {
   // Gmsh 4.8 crashes on it.
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string path = directory.file("physical_names.msh");
-  write_bytes(path, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n-1\n3 1 \"body\"\n"
+  write_text(path, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n-1\n3 1 \"body\"\n"
                     "$EndPhysicalNames\n" + kTetV22.substr(kTetV22.find("$Nodes")));
   EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr(path), HasSubstr("$PhysicalNames"),
                                           HasSubstr("\"-1\" where a count")));
@@ -249,15 +246,15 @@ std::string binary_tet_v41(std::uint64_t num_nodes, std::uint64_t block_nodes = 
 }
 
 TEST(ReadMshSafety, BinaryCountLargerThanTheFileIsReported) {
-  const testing::TemporaryDirectory directory("sinew-msh-safety");
+  const testing::TempDir directory("sinew-msh-safety");
   const std::string path = directory.file("binary.msh");
-  write_bytes(path, binary_tet_v41(4));
+  write_text(path, binary_tet_v41(4));
   EXPECT_EQ(read_msh(path).num_tets(), 1);  // the fixture itself is sound
-  write_bytes(path, binary_tet_v41(1'000'000'000'000'000));
+  write_text(path, binary_tet_v41(1'000'000'000'000'000));
   EXPECT_THAT(read_msh_error(path),
               AllOf(HasSubstr(path), HasSubstr("malformed or truncated"),
                     HasSubstr("1000000000000000 nodes"), Not(HasSubstr("bad_alloc"))));
-  write_bytes(path, binary_tet_v41(4, 1'000'000'000'000'000));
+  write_text(path, binary_tet_v41(4, 1'000'000'000'000'000));
   EXPECT_THAT(read_msh_error(path), AllOf(HasSubstr("malformed or truncated"),
                                           HasSubstr("nodes in an entity block")));
 }

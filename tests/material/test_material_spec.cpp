@@ -1,4 +1,4 @@
-/// @file material_spec_test.cpp
+/// @file test_material_spec.cpp
 /// validate() and make_material(): every bad parameter is rejected with a message naming the
 /// law, the parameter and the value; good parameter sets build the right law.
 

@@ -1,4 +1,4 @@
-/// @file psd_projection_test.cpp
+/// @file test_psd_projection.cpp
 /// Projection onto the positive semi-definite cone.
 
 #include "sinew/core/psd_projection.hpp"

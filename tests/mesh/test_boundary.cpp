@@ -28,7 +28,7 @@ TEST(BoundaryTriangles, SingleTetFacesPointAwayFromItsCentroid) {
 
 TEST(BoundaryTriangles, BoxSurfaceIsClosedOutwardAndEnclosesTheVolume) {
   for (const unsigned seed : {0u, 1u}) {
-    const TetMesh box = testing::shuffled(testing::structured_box(4, 3, 2, 0.25), seed);
+    const TetMesh box = testing::shuffled(testing::box_mesh(4, 3, 2, 0.25), seed);
     const Triangles boundary = boundary_triangles(box.tets);
     // Each unit square of the surface is two triangles.
     EXPECT_EQ(boundary.rows(), 2 * 2 * (4 * 3 + 3 * 2 + 4 * 2));
@@ -47,7 +47,7 @@ TEST(BoundaryTriangles, EmptyTetsGiveNoTriangles) {
 
 /// A 4 x 2 x 2 box whose left half (x < 2) is region 0 and right half region 1.
 TetMesh two_region_box() {
-  TetMesh box = testing::shuffled(testing::structured_box(4, 2, 2), 7);
+  TetMesh box = testing::shuffled(testing::box_mesh(4, 2, 2), 7);
   box.region_names = {"left", "right"};
   for (Index t = 0; t < box.num_tets(); ++t) {
     double centroid_x = 0;

@@ -10,7 +10,7 @@ namespace {
 
 /// A shuffled box with some tets removed, so that node valences vary and some nodes are unused.
 TetMesh irregular_mesh() {
-  const TetMesh box = testing::shuffled(testing::structured_box(4, 3, 3), 11);
+  const TetMesh box = testing::shuffled(testing::box_mesh(4, 3, 3), 11);
   std::vector<Index> kept;
   for (Index t = 0; t < box.num_tets(); ++t) {
     if (t % 5 != 2) kept.push_back(t);

@@ -56,7 +56,7 @@ TEST(ReferencedNodes, SortedAndUnique) {
 }
 
 TEST(StructuredBox, FixtureIsAValidMeshOfTheRightVolume) {
-  const TetMesh box = testing::structured_box(3, 2, 4, 0.5);
+  const TetMesh box = testing::box_mesh(3, 2, 4, 0.5);
   EXPECT_EQ(box.num_tets(), 6 * 3 * 2 * 4);
   EXPECT_NEAR(testing::total_volume(box.rest, box.tets), 1.5 * 1.0 * 2.0, 1e-12);
   EXPECT_NO_THROW(validate(box, "structured box"));

@@ -34,7 +34,7 @@ TetMesh hand_mesh(const Positions& nodes, const Tets& tets) {
 }
 
 TEST(Validate, AcceptsAStructuredBox) {
-  EXPECT_EQ(validation_message(testing::structured_box(3, 3, 3)), "");
+  EXPECT_EQ(validation_message(testing::box_mesh(3, 3, 3)), "");
 }
 
 TEST(Validate, RejectsAMeshWithoutTets) {
@@ -42,7 +42,7 @@ TEST(Validate, RejectsAMeshWithoutTets) {
 }
 
 TEST(Validate, RejectsInvertedTetsNamingThem) {
-  TetMesh mesh = testing::structured_box(3, 3, 3);
+  TetMesh mesh = testing::box_mesh(3, 3, 3);
   std::swap(mesh.tets(17, 0), mesh.tets(17, 1));
   std::swap(mesh.tets(40, 2), mesh.tets(40, 3));
   EXPECT_THAT(validation_message(mesh),
@@ -51,7 +51,7 @@ TEST(Validate, RejectsInvertedTetsNamingThem) {
 }
 
 TEST(Validate, RejectsZeroVolumeTets) {
-  TetMesh mesh = testing::structured_box(2, 2, 2);
+  TetMesh mesh = testing::box_mesh(2, 2, 2);
   // A tet that uses one node twice has zero volume.
   mesh.tets(5, 3) = mesh.tets(5, 0);
   EXPECT_THAT(validation_message(mesh),
@@ -69,7 +69,7 @@ TEST(Validate, RejectsFlatTetsFromCoplanarNodes) {
 }
 
 TEST(Validate, RejectsDuplicateTets) {
-  TetMesh mesh = testing::structured_box(2, 2, 2);
+  TetMesh mesh = testing::box_mesh(2, 2, 2);
   const Index last = mesh.num_tets();
   mesh.tets.conservativeResize(last + 1, 4);
   mesh.tets.row(last) << mesh.tets(3, 1), mesh.tets(3, 2), mesh.tets(3, 0), mesh.tets(3, 3);
@@ -80,7 +80,7 @@ TEST(Validate, RejectsDuplicateTets) {
 }
 
 TEST(Validate, RejectsNodeIndicesOutOfRange) {
-  TetMesh mesh = testing::structured_box(2, 2, 2);
+  TetMesh mesh = testing::box_mesh(2, 2, 2);
   mesh.tets(4, 2) = mesh.num_nodes();
   mesh.tets(9, 0) = -1;
   EXPECT_THAT(validation_message(mesh),
@@ -89,25 +89,25 @@ TEST(Validate, RejectsNodeIndicesOutOfRange) {
 }
 
 TEST(Validate, RejectsBadRegionsAndSets) {
-  TetMesh bad_region = testing::structured_box(1, 1, 1);
+  TetMesh bad_region = testing::box_mesh(1, 1, 1);
   bad_region.region(2) = 1;
   EXPECT_THAT(validation_message(bad_region), HasSubstr("region id"));
 
-  TetMesh short_region = testing::structured_box(1, 1, 1);
+  TetMesh short_region = testing::box_mesh(1, 1, 1);
   short_region.region.resize(2);
   EXPECT_THAT(validation_message(short_region), HasSubstr("region vector has 2 entries"));
 
-  TetMesh bad_node_set = testing::structured_box(1, 1, 1);
+  TetMesh bad_node_set = testing::box_mesh(1, 1, 1);
   bad_node_set.node_sets["top"] = {0, 99};
   EXPECT_THAT(validation_message(bad_node_set), HasSubstr("node set \"top\""));
 
-  TetMesh bad_face_set = testing::structured_box(1, 1, 1);
+  TetMesh bad_face_set = testing::box_mesh(1, 1, 1);
   bad_face_set.face_sets["top"] = Triangles::Constant(1, 3, 99);
   EXPECT_THAT(validation_message(bad_face_set), HasSubstr("face set \"top\""));
 }
 
 TEST(Validate, RejectsNonFiniteCoordinates) {
-  TetMesh mesh = testing::structured_box(1, 1, 1);
+  TetMesh mesh = testing::box_mesh(1, 1, 1);
   mesh.rest(3, 1) = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THAT(validation_message(mesh), HasSubstr("node 3 (1-based 4)"));
 }
@@ -158,7 +158,7 @@ TEST(Validate, AcceptsSeparateBodies) {
 }
 
 TEST(Validate, ListsOnlyTheFirstFewOffenders) {
-  TetMesh mesh = testing::structured_box(3, 3, 3);
+  TetMesh mesh = testing::box_mesh(3, 3, 3);
   for (Index t = 0; t < 10; ++t) std::swap(mesh.tets(t, 0), mesh.tets(t, 1));
   const std::string message = validation_message(mesh);
   EXPECT_THAT(message, HasSubstr("10 inverted tetrahedra"));

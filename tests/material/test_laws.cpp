@@ -1,4 +1,4 @@
-/// @file laws_test.cpp
+/// @file test_laws.cpp
 /// Properties every law must have (GUIDE.md section 3), for each base law with and without
 /// the fiber term: derivatives against finite differences, stress-free rest, frame
 /// invariance, blow-up as J -> 0+, +inf for det F <= 0, symmetric tangent, small-strain moduli.

@@ -1,4 +1,4 @@
-/// @file invariants_test.cpp
+/// @file test_invariants.cpp
 /// Closed-form invariants of C = F^T F and their derivatives against finite differences.
 
 #include "sinew/material/invariants.hpp"

@@ -1,4 +1,4 @@
-/// @file read_msh_fuzz_test.cpp
+/// @file test_read_msh_fuzz.cpp
 /// Seeded, bounded fuzzing of read_msh: small valid .msh files (ASCII and binary 2.2 and 4.1,
 /// ASCII 4.0, two of them with $NodeData) are damaged by byte flips, truncation, line deletion
 /// and duplication, numbers replaced
@@ -208,7 +208,7 @@ class Mutator {
 };
 
 TEST(ReadMshFuzz, DamagedFilesGiveAValidMeshOrAnInputError) {
-  const testing::TemporaryDirectory directory("sinew-msh-fuzz");
+  const testing::TempDir directory("sinew-msh-fuzz");
   struct Seed {
     std::string name;
     double version;
