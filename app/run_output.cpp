@@ -12,7 +12,7 @@
 
 namespace sinew::app {
 
-RunOutput::RunOutput(std::string directory, const model::Model& model, const scene::OutputConfig& config)
+RunOutput::RunOutput(std::string directory, model::Model& model, const scene::OutputConfig& config)
     : directory_(std::move(directory)), problem_(*model.problem), model_(model), config_(config) {
   const fem::Problem& problem = problem_;
   std::vector<std::string> columns =

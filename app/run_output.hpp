@@ -43,7 +43,9 @@ struct DynamicEnergies {
 class RunOutput {
  public:
   /// Creates nothing on disk until the first write.
-  RunOutput(std::string directory, const model::Model& model, const scene::OutputConfig& config);
+  /// Reactions are the objective's gradient at the written state, so the model is not const:
+  /// evaluating it refreshes the terms' bookkeeping (a no-op at the state Newton just accepted).
+  RunOutput(std::string directory, model::Model& model, const scene::OutputConfig& config);
 
   void write_step(const solver::StepRecord& step, const fem::State& state);
   /// A newton.csv row: the step being attempted, its lambda or time, the iteration.
@@ -92,7 +94,7 @@ class RunOutput {
   std::string directory_;
   double setup_seconds_ = 0;
   const fem::Problem& problem_;
-  const model::Model& model_;
+  model::Model& model_;
   scene::OutputConfig config_;
   std::unique_ptr<io::CsvTable> steps_;
   std::unique_ptr<io::CsvTable> newton_;
