@@ -27,6 +27,7 @@
 #include "sinew/collision/clip_triangle_tet.hpp"
 #include "sinew/contact/pair_integral.hpp"
 #include "sinew/core/energy.hpp"
+#include "sinew/core/enum_names.hpp"
 
 namespace sinew::contact {
 
@@ -34,6 +35,13 @@ enum class ContactMethod {
   Area,  ///< exact integral over triangle ∩ tet (the default; continuous forces)
   Point  ///< the dissertation's point collocation at triangle vertices (baseline)
 };
+
+/// Scene and command-line names of ContactMethod.
+inline constexpr NameTable<ContactMethod, 2> kContactMethodNames{{
+    {ContactMethod::Area, "area"},
+    {ContactMethod::Point, "point"},
+}};
+constexpr const auto& enum_names(ContactMethod) { return kContactMethodNames; }
 
 /// What takes part in contact, as plain arrays over the global node numbering.
 struct ContactGeometry {
