@@ -16,32 +16,7 @@ namespace {
 
 using nlohmann::json;
 
-/// The node at a dotted path of object keys ("solver.newton.max_iterations"); Map and Array
-/// steps are written "[]" ("bodies.[].regions.[].density"); variant keys are searched too.
-const SchemaNode& node_at(const std::string& path) {
-  const SchemaNode* node = &scene_schema().root;
-  std::istringstream steps(path);
-  std::string step;
-  while (std::getline(steps, step, '.')) {
-    while (node->type == SchemaType::Ref) node = &scene_schema().definitions.at(node->ref);
-    if (step == "[]") {
-      node = &node->items.at(0);
-      continue;
-    }
-    const SchemaNode* next = nullptr;
-    for (const SchemaNode& property : node->properties) {
-      if (property.key == step) next = &property;
-    }
-    for (const SchemaVariant& variant : node->variants) {
-      for (const SchemaNode& property : variant.properties) {
-        if (property.key == step) next = &property;
-      }
-    }
-    if (next == nullptr) throw std::runtime_error("no schema key " + path);
-    node = next;
-  }
-  return *node;
-}
+const SchemaNode& node_at(const std::string& path) { return testing::schema_node_at(path); }
 
 json default_at(const std::string& path) {
   const SchemaNode& node = node_at(path);

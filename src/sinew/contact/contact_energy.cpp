@@ -123,6 +123,7 @@ void ContactEnergy::require_current(const Positions& x) const {
 }
 
 void ContactEnergy::begin_step(const Positions& x) {
+  // Programming error, not input: the solver passes configurations of the contact geometry's mesh.
   if (x.rows() != geometry_.depth.size())
     throw std::invalid_argument(fmt::format("ContactEnergy::begin_step: x has {} rows, the contact geometry {} nodes",
                                             x.rows(), geometry_.depth.size()));
@@ -134,6 +135,7 @@ void ContactEnergy::begin_step(const Positions& x) {
 
 void ContactEnergy::update(const Positions& x) {
   if (x.rows() == current_x_.rows() && (x.array() == current_x_.array()).all()) return;
+  // Programming error, not input (as in begin_step).
   if (x.rows() != geometry_.depth.size())
     throw std::invalid_argument(fmt::format("ContactEnergy::update: x has {} rows, the contact geometry {} nodes",
                                             x.rows(), geometry_.depth.size()));

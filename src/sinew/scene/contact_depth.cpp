@@ -248,7 +248,12 @@ VectorX body_depths(const fem::Problem& problem, const fem::BodyRange& body, con
   if (!surface) return {};
   std::vector<Index> nodes(static_cast<std::size_t>(body.num_nodes));
   for (Index i = 0; i < body.num_nodes; ++i) nodes[static_cast<std::size_t>(i)] = body.first_node + i;
-  return collision::material_depth(problem.mesh.rest, *surface, nodes);
+  try {
+    return collision::material_depth(problem.mesh.rest, *surface, nodes);
+  } catch (const InputError& e) {
+    errors.push_back(fmt::format("{}: {}", path, e.what()));
+    return {};
+  }
 }
 
 }  // namespace sinew::scene

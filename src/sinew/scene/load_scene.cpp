@@ -130,7 +130,9 @@ class SceneReader {
   material::MaterialSpec read_material(const json& j, const std::string& path) {
     material::MaterialSpec spec;
     const std::size_t errors_before = errors.count();
-    switch (read_name<material::Law>(j, "law", path, errors)) {
+    const material::Law law = read_name<material::Law>(j, "law", path, errors);
+    if (errors.count() != errors_before) return spec;  // an unknown law: its parameters mean nothing
+    switch (law) {
       case material::Law::MooneyRivlin:
         spec.base = material::MooneyRivlinParams{j.at("C1").get<double>(), j.at("C2").get<double>(),
                                                  j.at("a").get<double>()};
@@ -143,7 +145,6 @@ class SceneReader {
         spec.base = material::NeoHookeanParams{j.at("mu").get<double>(), j.at("lambda").get<double>()};
         break;
     }
-    if (errors.count() != errors_before) return spec;  // an unknown law: its parameters mean nothing
     if (j.contains("fiber")) {
       const json& fiber = j.at("fiber");
       spec.fiber = material::FiberParams{fiber.at("alpha").get<double>(), fiber.at("beta").get<double>(),
