@@ -154,7 +154,7 @@ std::vector<BadName> bad_names() {
       {json::json_pointer("/boundary_conditions/0/type"), "boundary_conditions[0].type",
        names_list<BoundaryConditionConfig::Kind>()},
       {json::json_pointer("/bodies/0/regions/bone/rigid"), "bodies[0].regions.bone.rigid",
-       names_list<fem::RigidBody::Kind>()},
+       "\"fixed\", \"free\" or {\"prescribed\": motion}"},
   };
 }
 
@@ -179,9 +179,11 @@ TEST(SceneEnumNames, ReaderRejectsTheLastNameOfAnotherTable) {
   json scene = completed(scene_with_every_name());
   scene["contact"]["method"] = "gauss-newton";
   scene["dynamics"]["mass"] = "explicit";
+  scene["bodies"][0]["regions"]["bone"]["rigid"] = "prescribed";  // needs its motion: {"prescribed": ...}
   const std::string message = read_error(scene);
   EXPECT_THAT(message, HasSubstr("contact.method: unknown value \"gauss-newton\""));
   EXPECT_THAT(message, HasSubstr("dynamics.mass: unknown value \"explicit\""));
+  EXPECT_THAT(message, HasSubstr("bodies[0].regions.bone.rigid: unknown value \"prescribed\""));
 }
 
 TEST(SceneEnumNames, ParseSceneRejectsUnknownNamesNamingPathAndAllowedNames) {

@@ -232,10 +232,16 @@ class SceneReader {
       using RigidKind = fem::RigidBody::Kind;
       const std::string prescribed(name_of(RigidKind::Prescribed));
       if (rigid.is_string()) {
-        // "fixed" or "free"; the prescribed kind is written as an object {"prescribed": motion}.
-        region.rigid_kind = read_name<RigidKind>(j, "rigid", path, errors);
-        if (region.rigid_kind == RigidKind::Prescribed) {
-          error(json_path_key(path, "rigid"), "\"" + prescribed + "\" needs a motion: {\"" + prescribed + "\": {...}}");
+        // A string names the fixed or free kind; the prescribed one is an object {"prescribed": motion}.
+        const std::string name = rigid.get<std::string>();
+        const std::optional<RigidKind> kind = parse_name<RigidKind>(name);
+        if (kind && *kind != RigidKind::Prescribed) {
+          region.rigid_kind = *kind;
+        } else {
+          error(json_path_key(path, "rigid"), "unknown value " + json(name).dump() + "; allowed: " +
+                                                  json(std::string(name_of(RigidKind::Fixed))).dump() + ", " +
+                                                  json(std::string(name_of(RigidKind::Free))).dump() + " or {\"" + prescribed +
+                                                  "\": motion}");
         }
       } else {
         region.rigid_kind = RigidKind::Prescribed;
