@@ -12,6 +12,7 @@
 #include "convergence_study.hpp"
 #include "exit_codes.hpp"
 #include "run_scene.hpp"
+#include "sinew/core/enum_names.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/core/log.hpp"
 #include "sinew/io/atomic_file.hpp"
@@ -150,7 +151,7 @@ int run_commands(int argc, char** argv) {
                      "histories, converged or not, penetration table, force sweep");
   std::string study_path;
   ConvergenceStudyOptions study_options;
-  std::vector<std::string> study_methods{"area", "point"};
+  std::vector<std::string> study_methods = names_of<contact::ContactMethod>();
   std::vector<double> sweep_translation, sweep_from;
   convergence->add_option("scene", study_path, "scene file (JSON) with a contact section")->required();
   convergence->add_option("-o,--output", study_options.output_directory, "output directory")->capture_default_str();
@@ -161,7 +162,7 @@ int run_commands(int argc, char** argv) {
       ->capture_default_str();
   convergence->add_option("--methods", study_methods, "contact methods to run")
       ->delimiter(',')
-      ->check(CLI::IsMember({"area", "point"}))
+      ->check(CLI::IsMember(names_of<contact::ContactMethod>()))
       ->capture_default_str();
   convergence->add_option("--tolerance", study_options.tolerance,
                           "converged: the last equilibrium residual is at most this fraction of the run's largest")
@@ -220,8 +221,10 @@ int run_commands(int argc, char** argv) {
     }
     if (*convergence) {
       study_options.methods.clear();
-      for (const auto& m : study_methods)
-        study_options.methods.push_back(m == "point" ? contact::ContactMethod::Point : contact::ContactMethod::Area);
+      for (const auto& m : study_methods) {
+        // --methods is checked against the same name table (IsMember above): every name parses.
+        study_options.methods.push_back(parse_name<contact::ContactMethod>(m).value());
+      }
       if (sweep_from.size() == 3) study_options.sweep_from = Vector3(sweep_from[0], sweep_from[1], sweep_from[2]);
       if (sweep_translation.size() == 3)
         study_options.sweep_translation = Vector3(sweep_translation[0], sweep_translation[1], sweep_translation[2]);

@@ -126,7 +126,7 @@ void write_force_sweep(const model::Model& model, const ConvergenceStudyOptions&
 }  // namespace
 
 std::string contact_method_name(contact::ContactMethod method) {
-  return method == contact::ContactMethod::Area ? "area" : "point";
+  return std::string(name_of(method));
 }
 
 ConvergenceStudyReport run_convergence_study(const scene::SceneConfig& scene, const ConvergenceStudyOptions& o) {

@@ -81,7 +81,7 @@ ConvergenceStudyReport run_convergence_study(const scene::SceneConfig& scene, co
 std::string penetration_table_markdown(const ConvergenceStudyReport& report,
                                        const std::vector<contact::ContactMethod>& methods);
 
-/// "area" or "point".
+/// The scene name of `method` (contact::kContactMethodNames).
 std::string contact_method_name(contact::ContactMethod method);
 
 }  // namespace sinew::app

@@ -51,6 +51,16 @@ TEST_F(BadInput, TruncatedJsonNamesFileLineAndColumn) {
                                     ": malformed JSON"));
 }
 
+TEST_F(BadInput, UnknownSolverNameNamesItsPathAndTheAllowedNames) {
+  json scene = small_block_scene();
+  scene["solver"]["linear"] = {{"solver", "lu"}};
+  write_scene(scene);
+  const CommandResult result = run_rejected();
+  EXPECT_THAT(result.err, HasSubstr("solver.linear.solver: "));
+  EXPECT_THAT(result.err, HasSubstr("\"cholmod\", \"gmres\", \"cg\""));
+  EXPECT_THAT(result.err, HasSubstr("\"lu\""));
+}
+
 TEST_F(BadInput, UnknownKeyNamesItsPathAndSuggestsTheCloseSpelling) {
   json scene = small_block_scene();
   scene["solver"]["newton"] = {{"max_iteration", 10}};

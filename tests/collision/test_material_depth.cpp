@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sinew/collision/material_depth.hpp"
+#include "sinew/core/error.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
 #include "support/box_mesh.hpp"
 
@@ -84,8 +85,8 @@ TEST(MaterialDepth, BvhMatchesExhaustiveOnPerturbedMeshAndSubsets) {
 TEST(MaterialDepth, EmptyInputs) {
   const mesh::TetMesh m = testing::box_mesh(1, 1, 1, Vector3::Zero(), Vector3::Ones());
   EXPECT_EQ(material_depth(m.rest, Triangles(0, 3), {}).size(), 0);
-  EXPECT_THROW(material_depth(m.rest, Triangles(0, 3), {0}), std::invalid_argument);
-  EXPECT_THROW(material_depth(m.rest, mesh::boundary_triangles(m.tets), {99}), std::invalid_argument);
+  EXPECT_THROW(material_depth(m.rest, Triangles(0, 3), {0}), InputError);
+  EXPECT_THROW(material_depth(m.rest, mesh::boundary_triangles(m.tets), {99}), InputError);
 }
 
 /// Timing printout for ~50k nodes (a benchmark figure, not asserted).

@@ -5,17 +5,48 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "sinew/core/error.hpp"
 #include "sinew/scene/load_scene.hpp"
+#include "sinew/scene/scene_schema.hpp"
 #include "support/temp_dir.hpp"
 
 namespace sinew::scene::testing {
 
 using sinew::testing::TempDir;
+
+/// The scene schema's node at a dotted path of object keys ("solver.newton.max_iterations");
+/// Map and Array steps are written "[]" ("bodies.[].regions.[].density"); variant keys are
+/// searched too. Throws std::runtime_error for a path the schema does not have.
+inline const SchemaNode& schema_node_at(const std::string& path) {
+  const SchemaNode* node = &scene_schema().root;
+  std::istringstream steps(path);
+  std::string step;
+  while (std::getline(steps, step, '.')) {
+    while (node->type == SchemaType::Ref) node = &scene_schema().definitions.at(node->ref);
+    if (step == "[]") {
+      node = &node->items.at(0);
+      continue;
+    }
+    const SchemaNode* next = nullptr;
+    for (const SchemaNode& property : node->properties) {
+      if (property.key == step) next = &property;
+    }
+    for (const SchemaVariant& variant : node->variants) {
+      for (const SchemaNode& property : variant.properties) {
+        if (property.key == step) next = &property;
+      }
+    }
+    if (next == nullptr) throw std::runtime_error("no schema key " + path);
+    node = next;
+  }
+  return *node;
+}
 
 inline std::string data_directory() { return std::string(SINEW_SOURCE_DIR) + "/tests/scene/data"; }
 

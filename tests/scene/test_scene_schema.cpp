@@ -16,32 +16,7 @@ namespace {
 
 using nlohmann::json;
 
-/// The node at a dotted path of object keys ("solver.newton.max_iterations"); Map and Array
-/// steps are written "[]" ("bodies.[].regions.[].density"); variant keys are searched too.
-const SchemaNode& node_at(const std::string& path) {
-  const SchemaNode* node = &scene_schema().root;
-  std::istringstream steps(path);
-  std::string step;
-  while (std::getline(steps, step, '.')) {
-    while (node->type == SchemaType::Ref) node = &scene_schema().definitions.at(node->ref);
-    if (step == "[]") {
-      node = &node->items.at(0);
-      continue;
-    }
-    const SchemaNode* next = nullptr;
-    for (const SchemaNode& property : node->properties) {
-      if (property.key == step) next = &property;
-    }
-    for (const SchemaVariant& variant : node->variants) {
-      for (const SchemaNode& property : variant.properties) {
-        if (property.key == step) next = &property;
-      }
-    }
-    if (next == nullptr) throw std::runtime_error("no schema key " + path);
-    node = next;
-  }
-  return *node;
-}
+const SchemaNode& node_at(const std::string& path) { return testing::schema_node_at(path); }
 
 json default_at(const std::string& path) {
   const SchemaNode& node = node_at(path);
@@ -54,7 +29,7 @@ json vec(const Vector3& v) { return json::array({v.x(), v.y(), v.z()}); }
 TEST(SceneSchema, DocumentedDefaultsEqualTheStructDefaults) {
   const solver::StaticSolverOptions solver;
   EXPECT_EQ(default_at("solver.increments"), solver.stepping.increments);
-  EXPECT_EQ(default_at("solver.predictor"), predictor_name(solver.stepping.predictor));
+  EXPECT_EQ(default_at("solver.predictor"), name_of(solver.stepping.predictor));
   EXPECT_EQ(default_at("solver.predictor"), "tangent");
   EXPECT_EQ(default_at("solver.min_step"), solver.stepping.min_step);
   EXPECT_EQ(default_at("solver.growth"), solver.stepping.growth);
@@ -62,11 +37,11 @@ TEST(SceneSchema, DocumentedDefaultsEqualTheStructDefaults) {
   EXPECT_EQ(default_at("solver.newton.max_iterations"), solver.newton.max_iterations);
   EXPECT_EQ(default_at("solver.newton.residual_tolerance"), solver.newton.residual_tolerance);
   EXPECT_EQ(default_at("solver.newton.increment_tolerance"), solver.newton.increment_tolerance);
-  EXPECT_EQ(default_at("solver.newton.line_search"), line_search_name(solver.newton.line_search));
+  EXPECT_EQ(default_at("solver.newton.line_search"), name_of(solver.newton.line_search));
   EXPECT_EQ(default_at("solver.newton.max_line_search_steps"), solver.newton.max_line_search_steps);
   EXPECT_EQ(default_at("solver.newton.quasi_viscosity"), solver.newton.quasi_viscosity);
   EXPECT_EQ(default_at("solver.newton.project_hessians"), solver.newton.project_element_hessians);
-  EXPECT_EQ(default_at("solver.linear.solver"), linear_solver_name(solver.linear.kind));
+  EXPECT_EQ(default_at("solver.linear.solver"), name_of(solver.linear.kind));
   EXPECT_EQ(default_at("solver.linear.tolerance"), solver.linear.tolerance);
   EXPECT_EQ(default_at("solver.linear.max_iterations"), solver.linear.max_iterations);
   EXPECT_EQ(default_at("solver.linear.gmres_restart"), solver.linear.gmres_restart);

@@ -5,6 +5,7 @@
 namespace sinew::collision {
 
 void AabbTree::build(const std::vector<Aabb>& boxes, int leaf_size) {
+  // Programming error, not input: the leaf size is chosen by the code that builds the tree.
   if (leaf_size < 1) throw std::invalid_argument("AabbTree::build: leaf_size must be >= 1");
   nodes_.clear();
   leaf_boxes_.clear();
@@ -61,6 +62,7 @@ void AabbTree::build(const std::vector<Aabb>& boxes, int leaf_size) {
 }
 
 void AabbTree::refit(const std::vector<Aabb>& boxes) {
+  // Programming error, not input: refit() is given the boxes of the same primitives as build().
   if (boxes.size() != order_.size())
     throw std::invalid_argument("AabbTree::refit: " + std::to_string(boxes.size()) + " boxes for a tree built over " +
                                 std::to_string(order_.size()));

@@ -33,6 +33,7 @@ bool shares_node(const Triangles& triangles, Index f, const Tets& tets, Index t)
 std::vector<std::pair<Index, Index>> triangle_tet_candidates(const Positions& x, const Triangles& triangles,
                                                              const Tets& tets, const AabbTree& tet_tree,
                                                              double triangle_inflate) {
+  // Programming error, not input: the caller built the tree over these tets.
   if (tet_tree.num_primitives() != tets.rows())
     throw std::invalid_argument("triangle_tet_candidates: tree over " + std::to_string(tet_tree.num_primitives()) +
                                 " boxes for " + std::to_string(tets.rows()) + " tets");

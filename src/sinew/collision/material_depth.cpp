@@ -12,26 +12,29 @@
 #include "sinew/collision/aabb_tree.hpp"
 #include "sinew/collision/broad_phase.hpp"
 #include "sinew/collision/point_triangle_distance.hpp"
+#include "sinew/core/error.hpp"
 
 namespace sinew::collision {
 
 namespace {
 
+/// The surface and the nodes come from the user's meshes and choices (a zero-depth face set,
+/// region or node selection): a bad one is an input error.
 void check_inputs(const Positions& rest, const Triangles& surface, const std::vector<Index>& nodes,
                   const char* what) {
   const Index nv = static_cast<Index>(rest.rows());
   for (Index f = 0; f < surface.rows(); ++f)
     for (int k = 0; k < 3; ++k)
       if (surface(f, k) < 0 || surface(f, k) >= nv)
-        throw std::invalid_argument(std::string(what) + ": surface triangle " + std::to_string(f) +
+        throw InputError(std::string(what) + ": surface triangle " + std::to_string(f) +
                                     " has node index " + std::to_string(surface(f, k)) + " outside 0.." +
                                     std::to_string(nv - 1));
   for (const Index a : nodes)
     if (a < 0 || a >= nv)
-      throw std::invalid_argument(std::string(what) + ": node index " + std::to_string(a) + " outside 0.." +
+      throw InputError(std::string(what) + ": node index " + std::to_string(a) + " outside 0.." +
                                   std::to_string(nv - 1));
   if (surface.rows() == 0 && !nodes.empty())
-    throw std::invalid_argument(std::string(what) + ": the contact surface has no triangles");
+    throw InputError(std::string(what) + ": the contact surface has no triangles");
 }
 
 /// Per-node flag: 1 for vertices of the surface (their depth is exactly 0).

@@ -18,8 +18,7 @@ namespace sinew::collision {
 /// the exact distance from rest.row(nodes[i]) to the nearest triangle of `surface`, exactly 0
 /// for a node that is a vertex of `surface`. Uses an AabbTree over the triangle boxes and a
 /// branch-and-bound nearest search: O(F log F + N log F) typically. Runs in parallel over nodes.
-/// Throws std::invalid_argument when `surface` is empty and `nodes` is not, or an index is out
-/// of range.
+/// Throws InputError when `surface` is empty and `nodes` is not, or an index is out of range.
 VectorX material_depth(const Positions& rest, const Triangles& surface, const std::vector<Index>& nodes);
 
 /// Same result by the seed's exhaustive search (every node against every triangle), O(N F).

@@ -27,7 +27,7 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 CollisionSet::CollisionSet(std::shared_ptr<const ContactGeometry> geometry, ContactMethod method,
                            std::size_t candidate_cap)
     : geometry_(std::move(geometry)), integrator_(&pair_integrator(method)) {
-  if (!geometry_) throw std::invalid_argument("CollisionSet: no geometry");
+  if (!geometry_) throw std::invalid_argument("CollisionSet: no geometry");  // programming error, not input
   const ContactGeometry& g = *geometry_;
   validate_contact_geometry(g);
   candidate_cap_ =
@@ -45,6 +45,7 @@ CollisionSet::CollisionSet(ContactGeometry geometry, ContactMethod method, std::
 
 void CollisionSet::check_size(const Positions& x, const char* caller) const {
   if (x.rows() != geometry_->depth.size())
+    // Programming error, not input: the solver passes configurations of the contact geometry's mesh.
     throw std::invalid_argument(fmt::format("{}: x has {} rows, the contact geometry {} nodes", caller, x.rows(),
                                             geometry_->depth.size()));
 }

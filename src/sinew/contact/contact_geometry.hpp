@@ -12,6 +12,7 @@
 #include <cstddef>
 
 #include "sinew/contact/pair_integral.hpp"
+#include "sinew/core/enum_names.hpp"
 #include "sinew/core/types.hpp"
 
 namespace sinew::contact {
@@ -20,6 +21,13 @@ enum class ContactMethod {
   Area,  ///< exact integral over triangle ∩ tet (the default; continuous forces)
   Point  ///< the dissertation's point collocation at triangle vertices (baseline)
 };
+
+/// Scene and command-line names of ContactMethod.
+inline constexpr NameTable<ContactMethod, 2> kContactMethodNames{{
+    {ContactMethod::Area, "area"},
+    {ContactMethod::Point, "point"},
+}};
+constexpr const auto& enum_names(ContactMethod) { return kContactMethodNames; }
 
 /// What takes part in contact, as plain arrays over the global node numbering.
 struct ContactGeometry {

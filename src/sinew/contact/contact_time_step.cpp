@@ -8,6 +8,7 @@ namespace sinew::contact {
 
 ContactTimeStep contact_critical_time_step(const ContactGeometry& geometry, const Positions& rest,
                                            const VectorX& nodal_mass) {
+  // Programming error, not input: all three arrays are built over the same mesh.
   if (rest.rows() != nodal_mass.size() || rest.rows() != geometry.depth.size())
     throw std::invalid_argument("contact_critical_time_step: positions, masses and depths must have #V rows");
   const Index nodes = rest.rows();

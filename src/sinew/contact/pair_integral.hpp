@@ -15,6 +15,7 @@
 /// its area. Units: lengths L, depths L, I in L^4.
 
 #include "sinew/collision/clip_triangle_tet.hpp"
+#include "sinew/core/enum_names.hpp"
 #include "sinew/core/types.hpp"
 
 namespace sinew::contact {
@@ -37,6 +38,14 @@ enum class PairHessian {
   GaussNewton,  ///< Σ w ∇g ∇gᵀ over the quadrature of g² with frozen areas: positive semi-definite
   Projected     ///< the exact second derivative projected onto the PSD cone (negative eigenvalues -> 0)
 };
+
+/// Scene names of PairHessian.
+inline constexpr NameTable<PairHessian, 3> kPairHessianNames{{
+    {PairHessian::Exact, "exact"},
+    {PairHessian::Projected, "projected"},
+    {PairHessian::GaussNewton, "gauss-newton"},
+}};
+constexpr const auto& enum_names(PairHessian) { return kPairHessianNames; }
 
 /// ∫ g² da over the clip polygon `polygon` (from clip_triangle_tet of the same geometry).
 /// Zero for an empty polygon.

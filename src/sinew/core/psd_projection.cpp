@@ -33,6 +33,7 @@ Matrix12 project_to_psd(const Matrix12& A) { return project_symmetric(A); }
 Eigen::Matrix<double, 21, 21> project_to_psd(const Eigen::Matrix<double, 21, 21>& A) { return project_symmetric(A); }
 
 void project_to_psd_in_place(Eigen::Ref<MatrixX> A) {
+  // Programming error, not input: callers pass element or pair Hessians, square by construction.
   if (A.rows() != A.cols()) throw std::invalid_argument("project_to_psd_in_place: matrix is not square");
   if (A.size() == 0) return;
   A = project_symmetric(MatrixX(A));

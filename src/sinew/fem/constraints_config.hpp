@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sinew/core/enum_names.hpp"
 #include "sinew/fem/motion.hpp"
 
 namespace sinew::fem {
@@ -37,6 +38,15 @@ struct RigidBody {
   Kind kind = Kind::Fixed;
   RigidMotion motion;          ///< Prescribed only
 };
+
+/// Scene names of RigidBody::Kind ("fixed" and "free" are string values of a region's "rigid",
+/// "prescribed" the key of its motion).
+inline constexpr NameTable<RigidBody::Kind, 3> kRigidKindNames{{
+    {RigidBody::Kind::Fixed, "fixed"},
+    {RigidBody::Kind::Prescribed, "prescribed"},
+    {RigidBody::Kind::Free, "free"},
+}};
+constexpr const auto& enum_names(RigidBody::Kind) { return kRigidKindNames; }
 
 /// A constant force distributed equally over a node set (total force, force unit).
 struct NodalForce {

@@ -13,11 +13,19 @@
 
 #include <Eigen/SparseCore>
 
+#include "sinew/core/enum_names.hpp"
 #include "sinew/core/types.hpp"
 
 namespace sinew::fem {
 
 enum class MassKind { Lumped, Consistent };
+
+/// Scene names of MassKind.
+inline constexpr NameTable<MassKind, 2> kMassKindNames{{
+    {MassKind::Lumped, "lumped"},
+    {MassKind::Consistent, "consistent"},
+}};
+constexpr const auto& enum_names(MassKind) { return kMassKindNames; }
 
 /// #V x #V symmetric scalar mass matrix M (mass units); the 3x3 node block (a, b) of the full
 /// 3#V x 3#V matrix is M(a, b) * I3. Consistent: per tet rho V0 / 20 * (1 + delta_ab);

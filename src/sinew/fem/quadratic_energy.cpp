@@ -8,6 +8,8 @@ QuadraticEnergy::QuadraticEnergy(std::string name, BlockSparseMatrix matrix)
     : name_(std::move(name)), matrix_(std::move(matrix)) {}
 
 void QuadraticEnergy::set_center_and_scale(Positions center, double scale) {
+  // Programming errors, not input: the solver passes a configuration of the model and a scale
+  // 1/h or 1/h^2 of a time step h > 0.
   if (center.rows() != matrix_.num_nodes())
     throw std::invalid_argument("QuadraticEnergy: the center has " + std::to_string(center.rows()) +
                                 " rows, the matrix " + std::to_string(matrix_.num_nodes()) + " nodes");
@@ -75,6 +77,7 @@ void QuadraticEnergy::add_hessian(const Positions& /*x*/, BlockSparseMatrix& H) 
 }
 
 BlockSparseMatrix linear_combination(double a, const BlockSparseMatrix& A, double b, const BlockSparseMatrix& B) {
+  // Programming error, not input: both matrices are assembled over the same mesh.
   if (A.num_nodes() != B.num_nodes()) throw std::invalid_argument("linear_combination: matrices of different sizes");
   std::vector<std::pair<Index, Index>> pairs;
   for (const BlockSparseMatrix* M : {&A, &B})

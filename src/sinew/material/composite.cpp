@@ -12,6 +12,7 @@ namespace sinew::material {
 
 CompositeMaterial::CompositeMaterial(MaterialPtr base, const FiberParams& fiber)
     : base_(std::move(base)), fiber_(fiber) {
+  // Programming error, not input: make_material always passes a base law.
   if (!base_) throw std::invalid_argument("CompositeMaterial: base material is null");
   validate(fiber_);
   fiber_.direction.normalize();

@@ -7,6 +7,7 @@
 #include <string>
 #include <variant>
 
+#include "sinew/material/law.hpp"
 #include "sinew/material/material.hpp"
 
 namespace sinew::material {
@@ -39,7 +40,11 @@ struct FiberParams {
   Vector3 direction = Vector3::UnitX();  ///< rest direction, normalized by the factory
 };
 
+/// The base law's parameters; the alternatives are in the order of Law.
 using BaseLawParams = std::variant<MooneyRivlinParams, VerondaWestmannParams, NeoHookeanParams>;
+
+/// The law whose parameters `params` holds.
+constexpr Law law_of(const BaseLawParams& params) { return static_cast<Law>(params.index()); }
 
 struct MaterialSpec {
   BaseLawParams base;

@@ -40,7 +40,7 @@ double mooney_rivlin_bulk_modulus(const MooneyRivlinParams& params) {
 }
 
 void validate(const MooneyRivlinParams& params) {
-  constexpr const char* law = "mooney-rivlin";
+  constexpr std::string_view law = name_of(Law::MooneyRivlin);
   require_positive(law, "C1", params.C1);
   require_non_negative(law, "C2", params.C2);
   require_positive(law, "a", params.a);

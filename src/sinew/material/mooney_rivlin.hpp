@@ -29,7 +29,7 @@ class MooneyRivlin final : public Material {
   explicit MooneyRivlin(const MooneyRivlinParams& params);
 
   double evaluate(const Matrix3& F, Matrix3* P, Matrix9* dPdF) const override;
-  const char* name() const override { return "mooney-rivlin"; }
+  const char* name() const override { return name_of(Law::MooneyRivlin).data(); }
   double initial_shear_modulus() const override { return mooney_rivlin_shear_modulus(params_); }
   double initial_bulk_modulus() const override { return mooney_rivlin_bulk_modulus(params_); }
 

@@ -33,7 +33,7 @@ double neo_hookean_bulk_modulus(const NeoHookeanParams& params) {
 }
 
 void validate(const NeoHookeanParams& params) {
-  constexpr const char* law = "neo-hookean";
+  constexpr std::string_view law = name_of(Law::NeoHookean);
   require_positive(law, "mu", params.mu);
   require_non_negative(law, "lambda", params.lambda);
   require_positive_initial_moduli(law, neo_hookean_shear_modulus(params), "mu",

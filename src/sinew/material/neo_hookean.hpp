@@ -26,7 +26,7 @@ class NeoHookean final : public Material {
   explicit NeoHookean(const NeoHookeanParams& params);
 
   double evaluate(const Matrix3& F, Matrix3* P, Matrix9* dPdF) const override;
-  const char* name() const override { return "neo-hookean"; }
+  const char* name() const override { return name_of(Law::NeoHookean).data(); }
   double initial_shear_modulus() const override { return neo_hookean_shear_modulus(params_); }
   double initial_bulk_modulus() const override { return neo_hookean_bulk_modulus(params_); }
 

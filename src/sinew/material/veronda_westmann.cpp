@@ -45,7 +45,7 @@ double veronda_westmann_bulk_modulus(const VerondaWestmannParams& params) {
 }
 
 void validate(const VerondaWestmannParams& params) {
-  constexpr const char* law = "veronda-westmann";
+  constexpr std::string_view law = name_of(Law::VerondaWestmann);
   require_positive(law, "alpha", params.alpha);
   require_positive(law, "beta", params.beta);
   require_positive(law, "a", params.a);

@@ -30,7 +30,7 @@ class VerondaWestmann final : public Material {
   explicit VerondaWestmann(const VerondaWestmannParams& params);
 
   double evaluate(const Matrix3& F, Matrix3* P, Matrix9* dPdF) const override;
-  const char* name() const override { return "veronda-westmann"; }
+  const char* name() const override { return name_of(Law::VerondaWestmann).data(); }
   double initial_shear_modulus() const override { return veronda_westmann_shear_modulus(params_); }
   double initial_bulk_modulus() const override { return veronda_westmann_bulk_modulus(params_); }
 

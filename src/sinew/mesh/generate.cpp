@@ -42,25 +42,7 @@ constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 /// projection is shorter than this (axis within 0.06 degrees of x); then +y projected.
 constexpr double kMinReferenceProjection = 1e-3;
 
-std::string kind_name(Shape::Kind kind) {
-  switch (kind) {
-    case Shape::Kind::Box:
-      return "box";
-    case Shape::Kind::Cylinder:
-      return "cylinder";
-    case Shape::Kind::Sphere:
-      return "sphere";
-    case Shape::Kind::Torus:
-      return "torus";
-    case Shape::Kind::Union:
-      return "union";
-    case Shape::Kind::Difference:
-      return "difference";
-    case Shape::Kind::Intersection:
-      return "intersection";
-  }
-  return "shape";
-}
+std::string kind_name(Shape::Kind kind) { return std::string(name_of(kind)); }
 
 /// Six significant digits without trailing zeros: 0.1 rather than std::to_string's 0.100000.
 std::string format_number(double value) {

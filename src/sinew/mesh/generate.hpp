@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sinew/core/enum_names.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
 
 namespace sinew::mesh {
@@ -53,6 +54,18 @@ struct Shape {
   double rotation_angle_deg = 0;              ///< rotation angle (degrees, right-hand rule)
   Vector3 translation = Vector3::Zero();      ///< translation applied after the rotation (length)
 };
+
+/// Scene names of Shape::Kind (the keys of a shape object).
+inline constexpr NameTable<Shape::Kind, 7> kShapeKindNames{{
+    {Shape::Kind::Box, "box"},
+    {Shape::Kind::Sphere, "sphere"},
+    {Shape::Kind::Cylinder, "cylinder"},
+    {Shape::Kind::Torus, "torus"},
+    {Shape::Kind::Union, "union"},
+    {Shape::Kind::Difference, "difference"},
+    {Shape::Kind::Intersection, "intersection"},
+}};
+constexpr const auto& enum_names(Shape::Kind) { return kShapeKindNames; }
 
 /// A named part: its shape becomes a region of the mesh. Parts are fragmented together so
 /// their meshes are conforming (shared nodes) where they touch or overlap; where parts overlap,

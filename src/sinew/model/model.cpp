@@ -120,28 +120,6 @@ void attach_contact(Model& model, contact::ContactGeometry geometry, const conta
   }
 }
 
-/// The study's penalty against the bound of scene::build_contact: at most
-/// scene::kMaxPenaltyOverAutomatic times the automatic penalty 10 E / h of the pair (times the
-/// largest contact_penalty_scale).
-void check_penalty(const scene::ContactSetup& setup, Index a, Index b, double penalty) {
-  const auto& g = setup.geometry;
-  double largest_scale = 0;
-  if (g.surface_penalty_scale.size() > 0) largest_scale = std::max(largest_scale, g.surface_penalty_scale.maxCoeff());
-  if (g.tet_penalty_scale.size() > 0) largest_scale = std::max(largest_scale, g.tet_penalty_scale.maxCoeff());
-  if (largest_scale == 0) largest_scale = 1;
-  const auto ia = static_cast<std::size_t>(a), ib = static_cast<std::size_t>(b);
-  const double E = std::min(setup.body_young_modulus[ia], setup.body_young_modulus[ib]);
-  const double h = std::min(setup.body_edge_length[ia], setup.body_edge_length[ib]);
-  const double automatic = 10 * E / h;
-  if (!std::isfinite(automatic) || !(automatic > 0)) return;
-  if (penalty * largest_scale > scene::kMaxPenaltyOverAutomatic * automatic)
-    throw InputError(fmt::format(
-        "contact: the penalty {:g} between \"{}\" and \"{}\" is {:.3g} times the automatic penalty 10 E / h = {:.4g}; "
-        "above {:g} times the contact is too stiff for Newton to follow: lower it",
-        penalty, setup.body_names[ia], setup.body_names[ib], penalty * largest_scale / automatic, automatic,
-        scene::kMaxPenaltyOverAutomatic));
-}
-
 void detach_contact(Model& model) {
   model.contact.reset();
   if (model.dynamics) {
@@ -190,11 +168,9 @@ contact::ContactGeometry geometry_with_penalty(const scene::ContactSetup& setup,
     throw InputError(fmt::format("contact penalty {} must be finite and > 0", penalty));
   contact::ContactGeometry geometry = setup.geometry;
   for (Index a = 0; a < geometry.penalty.rows(); ++a)
-    for (Index b = 0; b < geometry.penalty.cols(); ++b) {
-      if (!(geometry.penalty(a, b) > 0)) continue;
-      geometry.penalty(a, b) = penalty;
-      check_penalty(setup, a, b, penalty);
-    }
+    for (Index b = 0; b < geometry.penalty.cols(); ++b)
+      if (geometry.penalty(a, b) > 0) geometry.penalty(a, b) = penalty;
+  scene::check_penalty_bounds(setup, geometry.penalty);
   return geometry;
 }
 

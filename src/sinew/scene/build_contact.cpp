@@ -1,80 +1,30 @@
+/// @file build_contact.cpp
+/// SceneConfig + fem::Problem -> the contact module's input (see build_contact.hpp): the
+/// bodies' surfaces and tets, their material depths (contact_depth.cpp), the per-region penalty
+/// factors and the penalty of every pair of bodies.
+
 #include "sinew/scene/build_contact.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
-#include <sstream>
+#include <utility>
 
 #include <fmt/format.h>
 
-#include "sinew/collision/material_depth.hpp"
 #include "sinew/core/error.hpp"
-#include "sinew/mesh/tet_mesh.hpp"
-#include "sinew/scene/build_problem.hpp"
+#include "sinew/scene/contact_depth.hpp"
 
 namespace sinew::scene {
 namespace {
 
-std::array<Index, 3> sorted_face(Index a, Index b, Index c) {
-  std::array<Index, 3> f{a, b, c};
-  std::sort(f.begin(), f.end());
-  return f;
-}
-
-Tets body_tets(const fem::Problem& problem, const fem::BodyRange& body) {
-  return problem.mesh.tets.middleRows(body.first_tet, body.num_tets);
-}
-
-/// Boundary faces of `all_boundary` that bound a tet of `region` (global region id).
-Triangles region_boundary(const Triangles& all_boundary, const fem::Problem& problem, const fem::BodyRange& body,
-                          Index region) {
-  std::vector<Index> selected;
-  for (Index t = body.first_tet; t < body.first_tet + body.num_tets; ++t)
-    if (problem.mesh.region[t] == region) selected.push_back(t);
-  Tets tets(static_cast<Index>(selected.size()), 4);
-  for (std::size_t k = 0; k < selected.size(); ++k) tets.row(static_cast<Index>(k)) = problem.mesh.tets.row(selected[k]);
-  const Triangles region_faces = mesh::boundary_triangles(tets);
-  std::set<std::array<Index, 3>> keys;
-  for (Index f = 0; f < region_faces.rows(); ++f)
-    keys.insert(sorted_face(region_faces(f, 0), region_faces(f, 1), region_faces(f, 2)));
-  std::vector<Index> rows;
-  for (Index f = 0; f < all_boundary.rows(); ++f)
-    if (keys.count(sorted_face(all_boundary(f, 0), all_boundary(f, 1), all_boundary(f, 2)))) rows.push_back(f);
-  Triangles out(static_cast<Index>(rows.size()), 3);
-  for (std::size_t k = 0; k < rows.size(); ++k) out.row(static_cast<Index>(k)) = all_boundary.row(rows[k]);
-  return out;
-}
-
-/// One body of the problem as a mesh of its own (local node numbering, names without the
-/// "<body>/" prefix), for node selectors.
-mesh::TetMesh body_mesh(const fem::Problem& problem, const fem::BodyRange& body) {
-  const auto& all = problem.mesh;
-  const std::string prefix = body.name + "/";
-  auto local_name = [&](const std::string& name) {
-    return name.rfind(prefix, 0) == 0 ? name.substr(prefix.size()) : name;
-  };
-  mesh::TetMesh m;
-  m.rest = all.rest.middleRows(body.first_node, body.num_nodes);
-  m.tets = all.tets.middleRows(body.first_tet, body.num_tets).array() - body.first_node;
-  m.region = all.region.segment(body.first_tet, body.num_tets);
-  for (const auto& name : all.region_names) m.region_names.push_back(local_name(name));
-  for (const auto& [name, nodes] : all.node_sets) {
-    if (name.rfind(prefix, 0) != 0) continue;
-    auto& local = m.node_sets[local_name(name)];
-    for (const Index v : nodes) local.push_back(v - body.first_node);
-  }
-  for (const auto& [name, faces] : all.face_sets)
-    if (name.rfind(prefix, 0) == 0) m.face_sets[local_name(name)] = faces.array() - body.first_node;
-  for (const auto& [name, values] : all.node_fields)
-    if (name.rfind(prefix, 0) == 0) m.node_fields[local_name(name)] = values.segment(body.first_node, body.num_nodes);
-  for (const auto& [name, reason] : all.skipped_node_fields)
-    if (name.rfind(prefix, 0) == 0) m.skipped_node_fields[local_name(name)] = reason;
-  return m;
-}
+/// The penalty scale of the reference penalty 10 E / h that explicit penalties are compared
+/// with (kMaxPenaltyOverAutomatic).
+constexpr double kReferencePenaltyScale = 10;
 
 double young_modulus(const material::Material& law) {
   const double mu = law.initial_shear_modulus(), kappa = law.initial_bulk_modulus();
@@ -88,199 +38,58 @@ double mean_edge_length(const Positions& x, const Triangles& triangles) {
   return triangles.rows() > 0 ? sum / (3.0 * static_cast<double>(triangles.rows())) : 0.0;
 }
 
-std::string joined_names(const std::vector<std::string>& names) {
-  std::string text;
-  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
-  return text.empty() ? "none" : text;
+/// The smallest initial Young's modulus of the body's deformable tets; +inf for a body whose
+/// tets are all rigid.
+double body_young_modulus(const fem::Problem& problem, const fem::BodyRange& body) {
+  double E = std::numeric_limits<double>::infinity();
+  for (Index t = body.first_tet; t < body.first_tet + body.num_tets; ++t)
+    if (const auto& law = problem.region_material[static_cast<std::size_t>(problem.mesh.region[t])])
+      E = std::min(E, young_modulus(*law));
+  return E;
 }
 
-/// Nodal depths from the node field `name` of a body's own mesh (local numbering). Throws
-/// InputError (without a path) when the field is absent or unusable, or a value is negative or
-/// not finite.
-VectorX depth_from_field(const mesh::TetMesh& local, const std::string& name) {
-  if (const auto skipped = local.skipped_node_fields.find(name); skipped != local.skipped_node_fields.end())
-    throw InputError(fmt::format("the mesh file's node field \"{}\" cannot be used: {}", name, skipped->second));
-  const auto field = local.node_fields.find(name);
-  if (field == local.node_fields.end()) {
-    std::vector<std::string> names;
-    for (const auto& entry : local.node_fields) names.push_back(entry.first);
-    for (const auto& [skipped_name, reason] : local.skipped_node_fields)
-      names.push_back(skipped_name + " (unusable: " + reason + ")");
-    throw InputError(
-        fmt::format("the mesh file has no node field \"{}\" (fields: {})", name, joined_names(names)));
-  }
-  const VectorX& values = field->second;
-  Index bad = 0, first = -1;
-  for (Index v = 0; v < values.size(); ++v) {
-    if (std::isfinite(values[v]) && values[v] >= 0) continue;
-    if (bad++ == 0) first = v;
-  }
-  if (bad > 0) {
-    const auto x = local.rest.row(first);
-    const std::string more =
-        bad > 1 ? fmt::format(", and {} more node{} with a negative or non-finite value", bad - 1, bad > 2 ? "s" : "")
-                : "";
-    throw InputError(fmt::format(
-        "node field \"{}\" has value {} at node {} (rest position ({:g}, {:g}, {:g})){}; depths must be finite and >= 0",
-        name, values[first], first, x(0), x(1), x(2), more));
-  }
-  return values;
+/// E and h of a pair of bodies: the smaller Young's modulus (a rigid body takes the other's)
+/// and the smaller mean boundary edge length.
+std::pair<double, double> pair_modulus_and_length(const ContactSetup& setup, Index a, Index b) {
+  const auto i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
+  return {std::min(setup.body_young_modulus[i], setup.body_young_modulus[j]),
+          std::min(setup.body_edge_length[i], setup.body_edge_length[j])};
 }
 
-}  // namespace
+/// The automatic penalty scale * E / h of bodies a and b (docs/scene-reference.md, contact:
+/// penalty_scale); nothing when both are rigid (no E).
+std::optional<double> automatic_penalty(const ContactSetup& setup, Index a, Index b, double scale) {
+  const auto [E, h] = pair_modulus_and_length(setup, a, b);
+  if (!std::isfinite(E)) return std::nullopt;
+  return scale * E / h;
+}
 
-VectorX read_depth_file(const std::string& path, Index expected) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("depth file {}: cannot be opened", path));
-  std::vector<double> values;
-  std::string line;
-  int line_number = 0;
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
-    std::istringstream words(line);
-    std::string word;
-    while (words >> word) {
-      double v = 0;
-      std::size_t used = 0;
-      try {
-        v = std::stod(word, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != word.size())
-        throw InputError(fmt::format("depth file {} line {}: \"{}\" is not a number", path, line_number, word));
-      if (!std::isfinite(v) || v < 0)
-        throw InputError(
-            fmt::format("depth file {} line {}: depth {} must be finite and >= 0", path, line_number, word));
-      values.push_back(v);
+/// Per mesh region: its contact_penalty_scale, from its own entry or else its body's "*" entry
+/// (as build_problem chooses), 1 for a region without either.
+VectorX region_penalty_scales(const SceneConfig& scene, const fem::Problem& problem) {
+  const auto& names = problem.mesh.region_names;
+  VectorX scale = VectorX::Ones(static_cast<Index>(names.size()));
+  for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
+    const std::string prefix = problem.bodies[b].name + "/";
+    const auto& regions = scene.bodies[b].regions;
+    for (std::size_t r = 0; r < names.size(); ++r) {
+      if (names[r].rfind(prefix, 0) != 0) continue;
+      auto entry = regions.find(names[r].substr(prefix.size()));
+      if (entry == regions.end()) entry = regions.find("*");
+      if (entry != regions.end()) scale[static_cast<Index>(r)] = entry->second.contact_penalty_scale;
     }
   }
-  if (static_cast<Index>(values.size()) != expected)
-    throw InputError(fmt::format("depth file {}: has {} depths, the body's mesh has {} nodes", path, values.size(),
-                                 expected));
-  return Eigen::Map<const VectorX>(values.data(), static_cast<Eigen::Index>(values.size()));
+  return scale;
 }
 
-ContactSetup build_contact(const SceneConfig& scene, const fem::Problem& problem) {
-  const ContactConfig& config = scene.contact;
-  ContactSetup setup;
-  setup.options.method = config.method;
-  setup.options.hessian = config.hessian;
+/// Fills the geometry's surface (every body's boundary, in body order), its body ids and, when
+/// a region scales its penalty, the factors of every tet and surface triangle: a tet takes its
+/// region's, a surface triangle the region of the tet it bounds. Left empty (all 1) otherwise.
+void assemble_surfaces(const std::vector<Triangles>& surfaces, const VectorX& region_scale,
+                       const fem::Problem& problem, contact::ContactGeometry& g) {
   const auto& mesh = problem.mesh;
-  const Index bodies = static_cast<Index>(problem.bodies.size());
-  auto& g = setup.geometry;
-  g.depth = VectorX::Zero(mesh.num_nodes());
-  g.tets = mesh.tets;
-  g.tet_body.resize(mesh.num_tets());
-  std::vector<Triangles> surfaces;
-  std::vector<std::string> errors;
-  for (Index b = 0; b < bodies; ++b) {
-    const fem::BodyRange& body = problem.bodies[static_cast<std::size_t>(b)];
-    const BodyConfig& body_config = scene.bodies[static_cast<std::size_t>(b)];
-    const std::string path = fmt::format("bodies[{}].contact", b);
-    setup.body_names.push_back(body.name);
-    g.tet_body.segment(body.first_tet, body.num_tets).setConstant(b);
-    const Triangles boundary = mesh::boundary_triangles(body_tets(problem, body));
-    surfaces.push_back(boundary);
-    setup.body_edge_length.push_back(mean_edge_length(mesh.rest, boundary));
-    double E = std::numeric_limits<double>::infinity();
-    for (Index t = body.first_tet; t < body.first_tet + body.num_tets; ++t)
-      if (const auto& law = problem.region_material[static_cast<std::size_t>(mesh.region[t])])
-        E = std::min(E, young_modulus(*law));
-    setup.body_young_modulus.push_back(E);
-
-    const BodyContactConfig& c = body_config.contact;
-    if (!c.depth_file.empty()) {
-      try {
-        g.depth.segment(body.first_node, body.num_nodes) = read_depth_file(c.depth_file, body.num_nodes);
-      } catch (const InputError& e) {
-        errors.push_back(fmt::format("{}.depth_file: {}", path, e.what()));
-      }
-      continue;
-    }
-    if (!c.depth_field.empty()) {
-      try {
-        g.depth.segment(body.first_node, body.num_nodes) = depth_from_field(body_mesh(problem, body), c.depth_field);
-      } catch (const InputError& e) {
-        errors.push_back(fmt::format("{}.depth_field: {}", path, e.what()));
-      }
-      continue;
-    }
-    Triangles zero_surface = boundary;
-    if (c.depth_surface == BodyContactConfig::DepthSurface::FaceSet) {
-      const std::string key = body.name + "/" + c.depth_surface_name;
-      const auto it = mesh.face_sets.find(key);
-      if (it == mesh.face_sets.end()) {
-        std::string known;
-        for (const auto& [name, faces] : mesh.face_sets)
-          if (name.rfind(body.name + "/", 0) == 0) known += (known.empty() ? "" : ", ") + name.substr(body.name.size() + 1);
-        errors.push_back(fmt::format("{}.depth_face_set: body \"{}\" has no face set \"{}\" (it has: {})", path,
-                                     body.name, c.depth_surface_name, known.empty() ? "none" : known));
-        continue;
-      }
-      zero_surface = it->second;
-    } else if (c.depth_surface == BodyContactConfig::DepthSurface::Nodes) {
-      const mesh::TetMesh local = body_mesh(problem, body);
-      std::vector<char> in_surface(static_cast<std::size_t>(boundary.rows()), 0);
-      bool failed = false;
-      for (std::size_t s = 0; s < c.depth_nodes.size(); ++s) {
-        std::vector<char> chosen(static_cast<std::size_t>(body.num_nodes), 0);
-        try {
-          for (const Index v : select_nodes(local, c.depth_nodes[s])) chosen[static_cast<std::size_t>(v)] = 1;
-        } catch (const InputError& e) {
-          errors.push_back(fmt::format("{}.depth_nodes[{}]: {}", path, s, e.what()));
-          failed = true;
-          continue;
-        }
-        for (Index f = 0; f < boundary.rows(); ++f) {
-          bool all = true;
-          for (int k = 0; k < 3; ++k) all = all && chosen[static_cast<std::size_t>(boundary(f, k) - body.first_node)];
-          if (all) in_surface[static_cast<std::size_t>(f)] = 1;
-        }
-      }
-      if (failed) continue;
-      std::vector<Index> rows;
-      for (Index f = 0; f < boundary.rows(); ++f)
-        if (in_surface[static_cast<std::size_t>(f)]) rows.push_back(f);
-      zero_surface.resize(static_cast<Index>(rows.size()), 3);
-      for (std::size_t k = 0; k < rows.size(); ++k) zero_surface.row(static_cast<Index>(k)) = boundary.row(rows[k]);
-    } else if (c.depth_surface == BodyContactConfig::DepthSurface::Region) {
-      const std::string key = body.name + "/" + c.depth_surface_name;
-      const auto it = std::find(mesh.region_names.begin(), mesh.region_names.end(), key);
-      if (it == mesh.region_names.end()) {
-        errors.push_back(fmt::format("{}.depth_region: body \"{}\" has no region \"{}\"", path, body.name,
-                                     c.depth_surface_name));
-        continue;
-      }
-      zero_surface = region_boundary(boundary, problem, body, static_cast<Index>(it - mesh.region_names.begin()));
-    }
-    if (zero_surface.rows() == 0) {
-      errors.push_back(fmt::format("{}: the zero-depth surface of body \"{}\" has no face", path, body.name));
-      continue;
-    }
-    std::vector<Index> nodes(static_cast<std::size_t>(body.num_nodes));
-    for (Index i = 0; i < body.num_nodes; ++i) nodes[static_cast<std::size_t>(i)] = body.first_node + i;
-    g.depth.segment(body.first_node, body.num_nodes) = collision::material_depth(mesh.rest, zero_surface, nodes);
-  }
-
   Index total = 0;
   for (const auto& s : surfaces) total += static_cast<Index>(s.rows());
-  // Per-region penalty factors: on every tet of the region and on the surface triangles whose
-  // tet is in the region. Left empty (all 1) when no region sets one.
-  // A region takes its own entry's factor, else the body's "*" entry's (as build_problem does).
-  VectorX region_scale = VectorX::Ones(static_cast<Index>(mesh.region_names.size()));
-  for (Index b = 0; b < bodies; ++b) {
-    const std::string prefix = problem.bodies[static_cast<std::size_t>(b)].name + "/";
-    const auto& regions = scene.bodies[static_cast<std::size_t>(b)].regions;
-    for (std::size_t r = 0; r < mesh.region_names.size(); ++r) {
-      const std::string& global = mesh.region_names[r];
-      if (global.rfind(prefix, 0) != 0) continue;
-      auto entry = regions.find(global.substr(prefix.size()));
-      if (entry == regions.end()) entry = regions.find("*");
-      if (entry != regions.end()) region_scale[static_cast<Index>(r)] = entry->second.contact_penalty_scale;
-    }
-  }
   const bool scaled = (region_scale.array() != 1.0).any();
   std::map<std::array<Index, 3>, Index> face_region;  // boundary face -> region of its tet
   if (scaled) {
@@ -296,90 +105,119 @@ ContactSetup build_contact(const SceneConfig& scene, const fem::Problem& problem
   g.surface.resize(total, 3);
   g.surface_body.resize(total);
   Index row = 0;
-  for (Index b = 0; b < bodies; ++b) {
-    const auto& s = surfaces[static_cast<std::size_t>(b)];
+  for (std::size_t b = 0; b < surfaces.size(); ++b) {
+    const auto& s = surfaces[b];
     g.surface.middleRows(row, s.rows()) = s;
-    g.surface_body.segment(row, s.rows()).setConstant(b);
+    g.surface_body.segment(row, s.rows()).setConstant(static_cast<Index>(b));
     if (scaled)
       for (Index f = 0; f < s.rows(); ++f)
         g.surface_penalty_scale[row + f] = region_scale[face_region.at(sorted_face(s(f, 0), s(f, 1), s(f, 2)))];
     row += static_cast<Index>(s.rows());
   }
+}
 
-  // Penalties: explicit pair > global > automatic.
-  g.penalty = MatrixX::Zero(bodies, bodies);
+/// The penalty of every pair of bodies: a pair's own entry (its penalty, or 0 when disabled),
+/// else the global penalty, else the automatic one; self-contact only when enabled. Two rigid
+/// bodies have no automatic penalty: not in contact by default, an error for a listed pair.
+MatrixX pair_penalties(const ContactConfig& config, const ContactSetup& setup, std::vector<std::string>& errors) {
+  const Index bodies = static_cast<Index>(setup.body_names.size());
   auto index_of = [&](const std::string& name) {
-    return static_cast<Index>(std::find(setup.body_names.begin(), setup.body_names.end(), name) - setup.body_names.begin());
+    return static_cast<Index>(std::find(setup.body_names.begin(), setup.body_names.end(), name) -
+                              setup.body_names.begin());
   };
-  std::set<std::pair<Index, Index>> explicit_pairs;
+  MatrixX penalty = MatrixX::Zero(bodies, bodies);
+  std::set<std::pair<Index, Index>> listed;
   for (const ContactPairConfig& pair : config.pairs) {
     const Index a = index_of(pair.body_a), b = index_of(pair.body_b);
-    explicit_pairs.insert({std::min(a, b), std::max(a, b)});
+    listed.insert({std::min(a, b), std::max(a, b)});
   }
   for (Index a = 0; a < bodies; ++a)
     for (Index b = a; b < bodies; ++b) {
-      if (a == b && !config.self_contact) continue;
-      if (explicit_pairs.count({a, b})) continue;
-      double penalty = 0;
-      if (config.penalty) {
-        penalty = *config.penalty;
-      } else {
-        const double E = std::min(setup.body_young_modulus[static_cast<std::size_t>(a)],
-                                  setup.body_young_modulus[static_cast<std::size_t>(b)]);
-        const double h = std::min(setup.body_edge_length[static_cast<std::size_t>(a)],
-                                  setup.body_edge_length[static_cast<std::size_t>(b)]);
-        if (!std::isfinite(E)) continue;  // two rigid bodies: no automatic penalty (see below)
-        penalty = config.penalty_scale * E / h;
-      }
-      g.penalty(a, b) = g.penalty(b, a) = penalty;
+      if ((a == b && !config.self_contact) || listed.count({a, b})) continue;
+      const std::optional<double> value =
+          config.penalty ? config.penalty : automatic_penalty(setup, a, b, config.penalty_scale);
+      if (value) penalty(a, b) = penalty(b, a) = *value;
     }
   for (std::size_t k = 0; k < config.pairs.size(); ++k) {
     const ContactPairConfig& pair = config.pairs[k];
     const Index a = index_of(pair.body_a), b = index_of(pair.body_b);
-    double penalty = 0;
+    std::optional<double> value = 0.0;
     if (pair.enabled) {
-      if (pair.penalty) {
-        penalty = *pair.penalty;
-      } else if (config.penalty) {
-        penalty = *config.penalty;
-      } else {
-        const double E = std::min(setup.body_young_modulus[static_cast<std::size_t>(a)],
-                                  setup.body_young_modulus[static_cast<std::size_t>(b)]);
-        if (!std::isfinite(E)) {
-          errors.push_back(fmt::format("contact.pairs[{}]: bodies \"{}\" and \"{}\" are both rigid, so there is no "
-                                       "automatic penalty; give \"penalty\"",
-                                       k, pair.body_a, pair.body_b));
-          continue;
-        }
-        penalty = config.penalty_scale * E /
-                  std::min(setup.body_edge_length[static_cast<std::size_t>(a)],
-                           setup.body_edge_length[static_cast<std::size_t>(b)]);
-      }
+      value = pair.penalty ? pair.penalty
+                           : config.penalty ? config.penalty : automatic_penalty(setup, a, b, config.penalty_scale);
     }
-    g.penalty(a, b) = g.penalty(b, a) = penalty;
+    if (!value) {
+      errors.push_back(fmt::format("contact.pairs[{}]: bodies \"{}\" and \"{}\" are both rigid, so there is no "
+                                   "automatic penalty; give \"penalty\"",
+                                   k, pair.body_a, pair.body_b));
+      continue;
+    }
+    penalty(a, b) = penalty(b, a) = *value;
   }
-  // A penalty far above the automatic one (10 E / h) makes the contact far stiffer than the
-  // solids: Newton then crawls through thousands of tiny steps (1e15 on the Hertz ball ran past
-  // 300 s; 1e5, 11 000 times the automatic one, took 45 s). Such penalties are refused.
-  const double largest_scale = region_scale.maxCoeff();
+  return penalty;
+}
+
+/// Refuses penalties far above the reference 10 E / h. Such a penalty makes the contact far
+/// stiffer than the solids: Newton then crawls through thousands of tiny steps (1e15 on the
+/// Hertz ball ran past 300 s; 1e5, 11 000 times the automatic one, took 45 s).
+void check_penalties(const ContactSetup& setup, const MatrixX& penalties, double largest_scale,
+                     std::vector<std::string>& errors) {
+  const Index bodies = penalties.rows();
   for (Index a = 0; a < bodies; ++a)
     for (Index b = a; b < bodies; ++b) {
-      const double E = std::min(setup.body_young_modulus[static_cast<std::size_t>(a)],
-                                setup.body_young_modulus[static_cast<std::size_t>(b)]);
-      const double h = std::min(setup.body_edge_length[static_cast<std::size_t>(a)],
-                                setup.body_edge_length[static_cast<std::size_t>(b)]);
-      const double automatic = 10 * E / h;
-      const double penalty = g.penalty(a, b) * largest_scale;
-      if (!(penalty > 0) || !std::isfinite(automatic) || !(automatic > 0)) continue;
-      if (penalty > kMaxPenaltyOverAutomatic * automatic)
-        errors.push_back(fmt::format(
-            "contact: the penalty between \"{}\" and \"{}\" ({:g}{}) is {:.3g} times the automatic penalty 10 E / h = "
-            "{:.4g} (E = {:.4g}, h = {:.4g}); above {:g} times the contact is too stiff for Newton to follow: lower it "
-            "(the automatic penalty keeps penetration to a few percent of an element)",
-            setup.body_names[static_cast<std::size_t>(a)], setup.body_names[static_cast<std::size_t>(b)], penalty,
-            largest_scale != 1 ? fmt::format(", with contact_penalty_scale {:g}", largest_scale) : std::string(),
-            penalty / automatic, automatic, E, h, kMaxPenaltyOverAutomatic));
+      const std::optional<double> reference = automatic_penalty(setup, a, b, kReferencePenaltyScale);
+      const double penalty = penalties(a, b) * largest_scale;
+      if (!(penalty > 0) || !reference || !std::isfinite(*reference) || !(*reference > 0)) continue;
+      if (penalty <= kMaxPenaltyOverAutomatic * *reference) continue;
+      const auto [E, h] = pair_modulus_and_length(setup, a, b);
+      errors.push_back(fmt::format(
+          "contact: the penalty between \"{}\" and \"{}\" ({:g}{}) is {:.3g} times the automatic penalty 10 E / h = "
+          "{:.4g} (E = {:.4g}, h = {:.4g}); above {:g} times the contact is too stiff for Newton to follow: lower it "
+          "(the automatic penalty keeps penetration to a few percent of an element)",
+          setup.body_names[static_cast<std::size_t>(a)], setup.body_names[static_cast<std::size_t>(b)], penalty,
+          largest_scale != 1 ? fmt::format(", with contact_penalty_scale {:g}", largest_scale) : std::string(),
+          penalty / *reference, *reference, E, h, kMaxPenaltyOverAutomatic));
     }
+}
+
+}  // namespace
+
+void check_penalty_bounds(const ContactSetup& setup, const MatrixX& penalties) {
+  std::vector<std::string> errors;
+  check_penalties(setup, penalties, setup.largest_penalty_scale, errors);
+  if (errors.empty()) return;
+  std::string message = errors.front();
+  for (std::size_t k = 1; k < errors.size(); ++k) message += "\n  " + errors[k];
+  throw InputError(message);
+}
+
+ContactSetup build_contact(const SceneConfig& scene, const fem::Problem& problem) {
+  ContactSetup setup;
+  setup.options.method = scene.contact.method;
+  setup.options.hessian = scene.contact.hessian;
+  const auto& mesh = problem.mesh;
+  auto& g = setup.geometry;
+  g.depth = VectorX::Zero(mesh.num_nodes());
+  g.tets = mesh.tets;
+  g.tet_body.resize(mesh.num_tets());
+  std::vector<Triangles> surfaces;
+  std::vector<std::string> errors;
+  for (std::size_t b = 0; b < problem.bodies.size(); ++b) {
+    const fem::BodyRange& body = problem.bodies[b];
+    setup.body_names.push_back(body.name);
+    g.tet_body.segment(body.first_tet, body.num_tets).setConstant(static_cast<Index>(b));
+    surfaces.push_back(body_boundary(problem, body));
+    setup.body_edge_length.push_back(mean_edge_length(mesh.rest, surfaces.back()));
+    setup.body_young_modulus.push_back(body_young_modulus(problem, body));
+    const VectorX depths = body_depths(problem, body, scene.bodies[b].contact, surfaces.back(),
+                                       fmt::format("bodies[{}].contact", b), errors);
+    if (depths.size() == body.num_nodes) g.depth.segment(body.first_node, body.num_nodes) = depths;
+  }
+  const VectorX region_scale = region_penalty_scales(scene, problem);
+  assemble_surfaces(surfaces, region_scale, problem, g);
+  g.penalty = pair_penalties(scene.contact, setup, errors);
+  setup.largest_penalty_scale = region_scale.maxCoeff();
+  check_penalties(setup, g.penalty, setup.largest_penalty_scale, errors);
   if (!errors.empty()) {
     std::string message = "the scene's contact set-up has errors:";
     for (const auto& e : errors) message += "\n  " + e;

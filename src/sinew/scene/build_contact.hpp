@@ -20,6 +20,7 @@ struct ContactSetup {
   std::vector<std::string> body_names;  ///< index = body id in the geometry
   std::vector<double> body_young_modulus;  ///< initial E per body (+inf for all-rigid bodies)
   std::vector<double> body_edge_length;    ///< mean boundary edge length per body (length)
+  double largest_penalty_scale = 1;        ///< largest contact_penalty_scale of any region
 };
 
 /// A pair's penalty (times the largest contact_penalty_scale) may be at most this many times
@@ -33,6 +34,11 @@ inline constexpr double kMaxPenaltyOverAutomatic = 1e5;
 /// a negative/non-finite value (the first such node is named), and a pair of all-rigid bodies
 /// without an explicit penalty, and a penalty above kMaxPenaltyOverAutomatic times the automatic one.
 ContactSetup build_contact(const SceneConfig& scene, const fem::Problem& problem);
+
+/// Throws InputError when a pair's penalty in `penalties` (#B x #B, force / length³) times
+/// setup.largest_penalty_scale exceeds kMaxPenaltyOverAutomatic times the pair's automatic
+/// penalty 10 E / h (build_contact's check, for penalties chosen after it, as model::set_contact does).
+void check_penalty_bounds(const ContactSetup& setup, const MatrixX& penalties);
 
 /// Nodal depths from a text file: whitespace-separated numbers, `expected` of them, each
 /// finite and >= 0; '#' starts a comment. Throws InputError naming the file and the problem.

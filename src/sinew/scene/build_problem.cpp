@@ -49,15 +49,12 @@ std::vector<Index> sorted_unique(std::vector<Index> nodes) {
   return nodes;
 }
 
+/// The selector's kind by its scene name, with the set or region name: `set "top"`, `box`.
 std::string describe_selector(const NodeSelector& selector) {
-  switch (selector.kind) {
-    case NodeSelector::Kind::Set: return "set \"" + selector.name + "\"";
-    case NodeSelector::Kind::Region: return "region \"" + selector.name + "\"";
-    case NodeSelector::Kind::Box: return "box";
-    case NodeSelector::Kind::Plane: return "plane";
-    case NodeSelector::Kind::All: return "all";
-  }
-  return "?";
+  std::string text(name_of(selector.kind));
+  if (selector.kind == NodeSelector::Kind::Set || selector.kind == NodeSelector::Kind::Region)
+    text += " \"" + selector.name + "\"";
+  return text;
 }
 
 /// The mesh of one body, placed, with the scene's entry for each of its regions.

@@ -7,20 +7,22 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <optional>
 #include <set>
 
+#include "sinew/core/enum_names.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/scene/scene_names.hpp"
+#include "sinew/scene/scene_reading.hpp"
 #include "sinew/scene/scene_schema.hpp"
 #include "sinew/scene/scene_text.hpp"
 
 namespace sinew::scene {
 
 using nlohmann::json;
+using namespace reading;  // NOLINT(google-build-using-namespace)
 
 namespace {
-
-constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 
 std::string join_lines(const std::vector<std::string>& lines) {
   std::string text;
@@ -40,14 +42,12 @@ std::string unknown_name_hint(const std::string& name, const std::vector<std::st
   return "; " + what + ": " + quoted_names(known);
 }
 
-Vector3 to_vector3(const json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
-
 /// Converts a validated, default-completed scene, collecting the errors no schema can see.
 class SceneReader {
  public:
   explicit SceneReader(std::string base_directory) : base_directory_(std::move(base_directory)) {}
 
-  std::vector<std::string> errors;
+  ReadErrors errors;
 
   SceneConfig read(const json& scene) {
     SceneConfig config;
@@ -100,15 +100,15 @@ class SceneReader {
       f.name = force.at("name").get<std::string>();
       f.nodes = read_selector(force.at("nodes"), json_path_key(path, "nodes"), config);
       f.total_force = to_vector3(force.at("total_force"));
-      if (force.contains("amplitude")) f.amplitude = read_amplitude(force.at("amplitude"), json_path_key(path, "amplitude"));
+      if (force.contains("amplitude")) f.amplitude = read_amplitude(force.at("amplitude"), json_path_key(path, "amplitude"), errors);
       if (!force_names.insert(f.name).second) error(json_path_key(path, "name"), "duplicate force name " + json(f.name).dump());
       config.loads.forces.push_back(std::move(f));
     }
 
     if (scene.contains("contact")) config.contact = read_contact(scene.at("contact"), config);
-    config.solver = read_solver(scene.at("solver"));
+    config.solver = read_solver(scene.at("solver"), errors);
     if (scene.contains("dynamics")) {
-      config.dynamics = read_dynamics(scene.at("dynamics"));
+      config.dynamics = read_dynamics(scene.at("dynamics"), errors);
       // Each output writes a VTU of the whole mesh: 1e6 of them is already far too many.
       const double outputs = config.dynamics.options.end_time / config.dynamics.options.output_interval;
       if (outputs > 1e6) {
@@ -118,25 +118,32 @@ class SceneReader {
     }
     config.output.vtu = scene.at("output").at("vtu").get<bool>();
     config.output.every = scene.at("output").at("every").get<int>();
-    for (std::string& clash : output_name_clashes(config)) errors.push_back(std::move(clash));
+    for (std::string& clash : output_name_clashes(config)) errors.lines.push_back(std::move(clash));
     return config;
   }
 
  private:
   std::string base_directory_;
 
-  void error(const std::string& path, const std::string& message) { errors.push_back(path + ": " + message); }
+  void error(const std::string& path, const std::string& message) { errors.add(path, message); }
 
   material::MaterialSpec read_material(const json& j, const std::string& path) {
     material::MaterialSpec spec;
-    const std::string law = j.at("law").get<std::string>();
-    if (law == "mooney-rivlin") {
-      spec.base = material::MooneyRivlinParams{j.at("C1").get<double>(), j.at("C2").get<double>(), j.at("a").get<double>()};
-    } else if (law == "veronda-westmann") {
-      spec.base = material::VerondaWestmannParams{j.at("alpha").get<double>(), j.at("beta").get<double>(),
-                                                  j.at("a").get<double>()};
-    } else {
-      spec.base = material::NeoHookeanParams{j.at("mu").get<double>(), j.at("lambda").get<double>()};
+    const std::size_t errors_before = errors.count();
+    const material::Law law = read_name<material::Law>(j, "law", path, errors);
+    if (errors.count() != errors_before) return spec;  // an unknown law: its parameters mean nothing
+    switch (law) {
+      case material::Law::MooneyRivlin:
+        spec.base = material::MooneyRivlinParams{j.at("C1").get<double>(), j.at("C2").get<double>(),
+                                                 j.at("a").get<double>()};
+        break;
+      case material::Law::VerondaWestmann:
+        spec.base = material::VerondaWestmannParams{j.at("alpha").get<double>(), j.at("beta").get<double>(),
+                                                    j.at("a").get<double>()};
+        break;
+      case material::Law::NeoHookean:
+        spec.base = material::NeoHookeanParams{j.at("mu").get<double>(), j.at("lambda").get<double>()};
+        break;
     }
     if (j.contains("fiber")) {
       const json& fiber = j.at("fiber");
@@ -155,70 +162,6 @@ class SceneReader {
     std::filesystem::path p(file);
     if (p.is_relative() && !base_directory_.empty()) p = std::filesystem::path(base_directory_) / p;
     return p.lexically_normal().string();
-  }
-
-  mesh::Shape read_shape(const json& j, const std::string& path) {
-    mesh::Shape shape;
-    if (j.contains("box")) {
-      shape.kind = mesh::Shape::Kind::Box;
-      shape.min = to_vector3(j.at("box").at("min"));
-      shape.max = to_vector3(j.at("box").at("max"));
-      if (!(shape.min.array() < shape.max.array()).all()) {
-        error(json_path_key(path, "box"), "max must exceed min in every component");
-      }
-    } else if (j.contains("sphere")) {
-      shape.kind = mesh::Shape::Kind::Sphere;
-      shape.center = to_vector3(j.at("sphere").at("center"));
-      shape.radius = j.at("sphere").at("radius").get<double>();
-    } else if (j.contains("cylinder")) {
-      shape.kind = mesh::Shape::Kind::Cylinder;
-      shape.center = to_vector3(j.at("cylinder").at("base"));
-      shape.axis = to_vector3(j.at("cylinder").at("axis"));
-      shape.radius = j.at("cylinder").at("radius").get<double>();
-    } else if (j.contains("torus")) {
-      read_torus(j.at("torus"), json_path_key(path, "torus"), shape);
-    } else {
-      const std::string key = j.contains("union") ? "union" : j.contains("difference") ? "difference" : "intersection";
-      shape.kind = key == "union"        ? mesh::Shape::Kind::Union
-                   : key == "difference" ? mesh::Shape::Kind::Difference
-                                         : mesh::Shape::Kind::Intersection;
-      const json& children = j.at(key);
-      for (std::size_t i = 0; i < children.size(); ++i) {
-        shape.children.push_back(read_shape(children[i], json_path_index(json_path_key(path, key), i)));
-      }
-    }
-    if (j.contains("transform")) {
-      const json& transform = j.at("transform");
-      shape.translation = to_vector3(transform.at("translate"));
-      if (transform.contains("rotate")) {
-        const json& rotate = transform.at("rotate");
-        shape.rotation_axis = to_vector3(rotate.at("axis"));
-        shape.rotation_center = to_vector3(rotate.at("center"));
-        shape.rotation_angle_deg = rotate.at("angle_deg").get<double>();
-      }
-    }
-    return shape;
-  }
-
-  void read_torus(const json& j, const std::string& path, mesh::Shape& shape) {
-    shape.kind = mesh::Shape::Kind::Torus;
-    shape.center = to_vector3(j.at("center"));
-    shape.axis = to_vector3(j.at("axis"));
-    shape.radius = j.at("radius").get<double>();
-    shape.minor_radius = j.at("minor_radius").get<double>();
-    shape.angle_deg = j.at("angle_deg").get<double>();
-    if (!(shape.minor_radius < shape.radius)) {
-      error(json_path_key(path, "minor_radius"), "must be < radius (" + format_number(shape.radius) + "), got " +
-                                                     format_number(shape.minor_radius));
-    }
-    if (j.contains("start_direction")) {
-      shape.start_direction = to_vector3(j.at("start_direction"));
-      const Vector3 axis = shape.axis.normalized();
-      const Vector3 start = shape.start_direction.normalized();
-      if ((start - start.dot(axis) * axis).norm() < 1e-9) {
-        error(json_path_key(path, "start_direction"), "must not be parallel to axis");
-      }
-    }
   }
 
   MeshSourceConfig read_mesh(const json& body, const std::string& path) {
@@ -245,7 +188,7 @@ class SceneReader {
         const std::string part_path = json_path_index(json_path_key(generate_path, "parts"), i);
         mesh::Part part;
         part.region = parts[i].at("region").get<std::string>();
-        part.shape = read_shape(parts[i].at("shape"), json_path_key(part_path, "shape"));
+        part.shape = read_shape(parts[i].at("shape"), json_path_key(part_path, "shape"), errors);
         if (!region_names.insert(part.region).second) {
           error(json_path_key(part_path, "region"), "duplicate part region " + json(part.region).dump());
         }
@@ -286,11 +229,24 @@ class SceneReader {
     if (has_rigid) {
       region.rigid = true;
       const json& rigid = j.at("rigid");
+      using RigidKind = fem::RigidBody::Kind;
+      const std::string prescribed(name_of(RigidKind::Prescribed));
       if (rigid.is_string()) {
-        region.rigid_kind = rigid.get<std::string>() == "fixed" ? fem::RigidBody::Kind::Fixed : fem::RigidBody::Kind::Free;
+        // A string names the fixed or free kind; the prescribed one is an object {"prescribed": motion}.
+        const std::string name = rigid.get<std::string>();
+        const std::optional<RigidKind> kind = parse_name<RigidKind>(name);
+        if (kind && *kind != RigidKind::Prescribed) {
+          region.rigid_kind = *kind;
+        } else {
+          error(json_path_key(path, "rigid"), "unknown value " + json(name).dump() + "; allowed: " +
+                                                  json(std::string(name_of(RigidKind::Fixed))).dump() + ", " +
+                                                  json(std::string(name_of(RigidKind::Free))).dump() + " or {\"" + prescribed +
+                                                  "\": motion}");
+        }
       } else {
-        region.rigid_kind = fem::RigidBody::Kind::Prescribed;
-        region.rigid_motion = read_motion(rigid.at("prescribed"), json_path_key(json_path_key(path, "rigid"), "prescribed"));
+        region.rigid_kind = RigidKind::Prescribed;
+        region.rigid_motion =
+            read_motion(rigid.at(prescribed), json_path_key(json_path_key(path, "rigid"), prescribed), errors);
       }
       if (region.fiber_direction) {
         error(json_path_key(path, "fiber_direction"), "a rigid region has no fibers");
@@ -302,12 +258,8 @@ class SceneReader {
   ContactConfig read_contact(const json& j, const SceneConfig& config) {
     ContactConfig contact;
     contact.enabled = true;
-    contact.method = j.at("method").get<std::string>() == "point" ? contact::ContactMethod::Point
-                                                                  : contact::ContactMethod::Area;
-    const std::string hessian = j.at("hessian").get<std::string>();
-    contact.hessian = hessian == "exact"       ? contact::PairHessian::Exact
-                      : hessian == "projected" ? contact::PairHessian::Projected
-                                               : contact::PairHessian::GaussNewton;
+    contact.method = read_name<contact::ContactMethod>(j, "method", "contact", errors);
+    contact.hessian = read_name<contact::PairHessian>(j, "hessian", "contact", errors);
     if (j.contains("penalty")) contact.penalty = j.at("penalty").get<double>();
     contact.penalty_scale = j.at("penalty_scale").get<double>();
     contact.self_contact = j.at("self_contact").get<bool>();
@@ -388,33 +340,6 @@ class SceneReader {
     }
   }
 
-  fem::Amplitude read_amplitude(const json& j, const std::string& path) {
-    fem::Amplitude amplitude;
-    for (std::size_t i = 0; i < j.size(); ++i) {
-      const double lambda = j[i][0].get<double>();
-      if (i > 0 && !(lambda > amplitude.points.back().first)) {
-        error(json_path_index(json_path_index(path, i), 0),
-              "lambda must be strictly increasing, got " + format_number(lambda) + " after " +
-                  format_number(amplitude.points.back().first));
-      }
-      amplitude.points.emplace_back(lambda, j[i][1].get<double>());
-    }
-    return amplitude;
-  }
-
-  fem::RigidMotion read_motion(const json& j, const std::string& path) {
-    fem::RigidMotion motion;
-    motion.translation = to_vector3(j.at("translation"));
-    if (j.contains("rotation")) {
-      const json& rotation = j.at("rotation");
-      motion.axis = to_vector3(rotation.at("axis"));
-      motion.axis_point = to_vector3(rotation.at("point"));
-      motion.angle = rotation.at("angle_deg").get<double>() * kRadiansPerDegree;
-    }
-    if (j.contains("amplitude")) motion.amplitude = read_amplitude(j.at("amplitude"), json_path_key(path, "amplitude"));
-    return motion;
-  }
-
   NodeSelector read_selector(const json& j, const std::string& path, const SceneConfig& config) {
     NodeSelector selector;
     std::vector<std::string> body_names;
@@ -431,27 +356,35 @@ class SceneReader {
       error(json_path_key(path, "body"), "required when the scene has more than one body (bodies: " +
                                              quoted_names(body_names) + ")");
     }
-    if (j.contains("set")) {
-      selector.kind = NodeSelector::Kind::Set;
-      selector.name = j.at("set").get<std::string>();
-    } else if (j.contains("region")) {
-      selector.kind = NodeSelector::Kind::Region;
-      selector.name = j.at("region").get<std::string>();
-    } else if (j.contains("box")) {
-      selector.kind = NodeSelector::Kind::Box;
-      selector.box_min = to_vector3(j.at("box").at("min"));
-      selector.box_max = to_vector3(j.at("box").at("max"));
-      selector.tolerance = j.at("box").at("padding").get<double>();
-      if (!(selector.box_min.array() <= selector.box_max.array()).all()) {
-        error(json_path_key(path, "box"), "max must be >= min in every component");
-      }
-    } else if (j.contains("plane")) {
-      selector.kind = NodeSelector::Kind::Plane;
-      selector.point = to_vector3(j.at("plane").at("point"));
-      selector.normal = to_vector3(j.at("plane").at("normal"));
-      selector.tolerance = j.at("plane").at("tolerance").get<double>();
-    } else {
-      selector.kind = NodeSelector::Kind::All;
+    using Kind = NodeSelector::Kind;
+    const std::optional<Kind> kind = kind_key<Kind>(j);
+    if (!kind) {
+      error(path, "needs one of " + names_list<Kind>());
+      return selector;
+    }
+    selector.kind = *kind;
+    const std::string key(name_of(*kind));
+    const json& value = j.at(key);
+    switch (*kind) {
+      case Kind::Set:
+      case Kind::Region:
+        selector.name = value.get<std::string>();
+        break;
+      case Kind::Box:
+        selector.box_min = to_vector3(value.at("min"));
+        selector.box_max = to_vector3(value.at("max"));
+        selector.tolerance = value.at("padding").get<double>();
+        if (!(selector.box_min.array() <= selector.box_max.array()).all()) {
+          error(json_path_key(path, key), "max must be >= min in every component");
+        }
+        break;
+      case Kind::Plane:
+        selector.point = to_vector3(value.at("point"));
+        selector.normal = to_vector3(value.at("normal"));
+        selector.tolerance = value.at("tolerance").get<double>();
+        break;
+      case Kind::All:
+        break;
     }
     return selector;
   }
@@ -460,92 +393,39 @@ class SceneReader {
     BoundaryConditionConfig bc;
     bc.name = j.at("name").get<std::string>();
     bc.nodes = read_selector(j.at("nodes"), json_path_key(path, "nodes"), config);
-    const std::string type = j.at("type").get<std::string>();
-    if (type == "fixed") {
-      bc.kind = BoundaryConditionConfig::Kind::Fixed;
-    } else if (type == "prescribed") {
-      bc.kind = BoundaryConditionConfig::Kind::Prescribed;
-      bc.motion = read_motion(j.at("motion"), json_path_key(path, "motion"));
-    } else {
-      bc.kind = BoundaryConditionConfig::Kind::Planar;
-      bc.normal = to_vector3(j.at("normal"));
-      bc.displacement = j.at("displacement").get<double>();
-      if (j.contains("amplitude")) bc.amplitude = read_amplitude(j.at("amplitude"), json_path_key(path, "amplitude"));
+    const std::size_t errors_before = errors.count();
+    bc.kind = read_name<BoundaryConditionConfig::Kind>(j, "type", path, errors);
+    if (errors.count() != errors_before) return bc;  // an unknown type: its other keys mean nothing
+    switch (bc.kind) {
+      case BoundaryConditionConfig::Kind::Fixed:
+        break;
+      case BoundaryConditionConfig::Kind::Prescribed:
+        bc.motion = read_motion(j.at("motion"), json_path_key(path, "motion"), errors);
+        break;
+      case BoundaryConditionConfig::Kind::Planar:
+        bc.normal = to_vector3(j.at("normal"));
+        bc.displacement = j.at("displacement").get<double>();
+        if (j.contains("amplitude")) bc.amplitude = read_amplitude(j.at("amplitude"), json_path_key(path, "amplitude"), errors);
+        break;
     }
     return bc;
   }
 
-  template <typename Enum, typename NameOf>
-  static Enum enum_from_name(const std::string& name, std::initializer_list<Enum> values, NameOf name_of) {
-    for (Enum value : values) {
-      if (name == name_of(value)) return value;
-    }
-    return *values.begin();  // unreachable: the schema allows only these names
-  }
-
-  static DynamicsConfig read_dynamics(const json& j) {
-    using Integrator = solver::DynamicOptions::Integrator;
-    DynamicsConfig d;
-    d.enabled = true;
-    const std::string integrator = j.at("integrator").get<std::string>();
-    d.options.integrator = integrator == "explicit"      ? Integrator::Explicit
-                           : integrator == "quasistatic" ? Integrator::Quasistatic
-                                                         : Integrator::ImplicitEuler;
-    d.options.end_time = j.at("end_time").get<double>();
-    d.options.output_interval = j.at("output_interval").get<double>();
-    if (j.contains("time_step")) d.options.time_step = j.at("time_step").get<double>();
-    if (j.contains("max_time_step")) d.options.max_time_step = j.at("max_time_step").get<double>();
-    if (j.contains("min_time_step")) d.options.min_time_step = j.at("min_time_step").get<double>();
-    d.options.growth = j.at("growth").get<double>();
-    d.options.easy_iterations = j.at("easy_iterations").get<int>();
-    d.options.explicit_safety = j.at("explicit_safety").get<double>();
-    d.mass = j.at("mass").get<std::string>() == "consistent" ? fem::MassKind::Consistent : fem::MassKind::Lumped;
-    d.mass_damping = j.at("mass_damping").get<double>();
-    d.stiffness_damping = j.at("stiffness_damping").get<double>();
-    return d;
-  }
-
-  static solver::StaticSolverOptions read_solver(const json& j) {
-    using Predictor = solver::LoadSteppingOptions::Predictor;
-    using Rule = solver::NewtonOptions::LineSearchRule;
-    using Kind = solver::LinearSolverOptions::Kind;
-    solver::StaticSolverOptions options;
-    options.stepping.increments = j.at("increments").get<int>();
-    options.stepping.predictor = enum_from_name(j.at("predictor").get<std::string>(),
-                                                {Predictor::None, Predictor::TwoPoint, Predictor::Tangent}, predictor_name);
-    options.stepping.min_step = j.at("min_step").get<double>();
-    options.stepping.growth = j.at("growth").get<double>();
-    options.stepping.easy_iterations = j.at("easy_iterations").get<int>();
-    options.stepping.snap_through_after_cuts = j.at("snap_through_after_cuts").get<int>();
-    options.stepping.snap_through_iterations = j.at("snap_through_iterations").get<int>();
-    const json& newton = j.at("newton");
-    options.newton.max_iterations = newton.at("max_iterations").get<int>();
-    options.newton.residual_tolerance = newton.at("residual_tolerance").get<double>();
-    options.newton.increment_tolerance = newton.at("increment_tolerance").get<double>();
-    options.newton.line_search =
-        enum_from_name(newton.at("line_search").get<std::string>(), {Rule::Energy, Rule::Residual}, line_search_name);
-    options.newton.max_line_search_steps = newton.at("max_line_search_steps").get<int>();
-    options.newton.quasi_viscosity = newton.at("quasi_viscosity").get<double>();
-    options.newton.project_element_hessians = newton.at("project_hessians").get<bool>();
-    const json& linear = j.at("linear");
-    options.linear.kind = enum_from_name(linear.at("solver").get<std::string>(),
-                                         {Kind::Cholmod, Kind::Gmres, Kind::ConjugateGradient}, linear_solver_name);
-    options.linear.tolerance = linear.at("tolerance").get<double>();
-    options.linear.max_iterations = linear.at("max_iterations").get<int>();
-    options.linear.gmres_restart = linear.at("gmres_restart").get<int>();
-    return options;
-  }
 };
 
 }  // namespace
 
+SceneConfig read_scene(const json& completed, const std::string& base_directory) {
+  SceneReader reader(base_directory);
+  SceneConfig config = reader.read(completed);
+  if (reader.errors.count() > 0) throw InputError(join_lines(reader.errors.lines));
+  return config;
+}
+
 SceneConfig parse_scene(const json& scene, const std::string& base_directory) {
   SchemaValidation validation = validate_and_complete(scene_schema(), scene);
   if (!validation.errors.empty()) throw InputError(join_lines(validation.errors));
-  SceneReader reader(base_directory);
-  SceneConfig config = reader.read(validation.completed);
-  if (!reader.errors.empty()) throw InputError(join_lines(reader.errors));
-  return config;
+  return read_scene(validation.completed, base_directory);
 }
 
 SceneConfig load_scene_file(const std::string& path) {

@@ -28,4 +28,10 @@ SceneConfig load_scene_file(const std::string& path);
 /// schema.
 SceneConfig parse_scene(const nlohmann::json& scene, const std::string& base_directory);
 
+/// The conversion step of parse_scene alone: `completed` must have passed the schema (every
+/// default filled in). Names of enumerations are parsed strictly even so: an unknown one is an
+/// error "<path>: unknown value \"x\"; allowed: \"a\", \"b\"". Throws InputError listing every
+/// error found, one per line.
+SceneConfig read_scene(const nlohmann::json& completed, const std::string& base_directory);
+
 }  // namespace sinew::scene

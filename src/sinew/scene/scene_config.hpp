@@ -51,6 +51,16 @@ struct NodeSelector {
   double tolerance = 1e-9;  ///< Plane: |n.(X-p)| <= tolerance; Box: padding (length)
 };
 
+/// Scene names of NodeSelector::Kind (the keys of a node selector).
+inline constexpr NameTable<NodeSelector::Kind, 5> kNodeSelectorKindNames{{
+    {NodeSelector::Kind::Set, "set"},
+    {NodeSelector::Kind::Region, "region"},
+    {NodeSelector::Kind::Box, "box"},
+    {NodeSelector::Kind::Plane, "plane"},
+    {NodeSelector::Kind::All, "all"},
+}};
+constexpr const auto& enum_names(NodeSelector::Kind) { return kNodeSelectorKindNames; }
+
 /// How a body takes part in contact.
 struct BodyContactConfig {
   /// Which boundary faces are the zero-depth surface from which material depth is measured.
@@ -83,6 +93,14 @@ struct BoundaryConditionConfig {
   double displacement = 0;            ///< Planar: final normal displacement
   fem::Amplitude amplitude;           ///< Planar
 };
+
+/// Scene names of BoundaryConditionConfig::Kind (the "type" of a boundary condition).
+inline constexpr NameTable<BoundaryConditionConfig::Kind, 3> kBoundaryConditionKindNames{{
+    {BoundaryConditionConfig::Kind::Fixed, "fixed"},
+    {BoundaryConditionConfig::Kind::Prescribed, "prescribed"},
+    {BoundaryConditionConfig::Kind::Planar, "planar"},
+}};
+constexpr const auto& enum_names(BoundaryConditionConfig::Kind) { return kBoundaryConditionKindNames; }
 
 struct ForceConfig {
   std::string name;

@@ -8,7 +8,6 @@
 #include <nlohmann/json.hpp>
 
 #include "sinew/scene/schema.hpp"
-#include "sinew/solver/solver_config.hpp"
 
 namespace sinew::scene {
 
@@ -28,10 +27,5 @@ nlohmann::json scene_json_schema();
 
 /// A complete example scene (the one shown in the reference).
 const std::string& scene_example_json();
-
-/// Scene-file names of the solver's enumerations (the allowed values in the schema).
-const char* predictor_name(solver::LoadSteppingOptions::Predictor predictor);
-const char* line_search_name(solver::NewtonOptions::LineSearchRule rule);
-const char* linear_solver_name(solver::LinearSolverOptions::Kind kind);
 
 }  // namespace sinew::scene

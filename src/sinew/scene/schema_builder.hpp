@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sinew/core/enum_names.hpp"
 #include "sinew/core/types.hpp"
 #include "sinew/scene/schema.hpp"
 
@@ -115,5 +116,25 @@ inline Key ref(std::string key, std::string doc, std::string definition) {
 }
 
 inline json vec3_json(const Vector3& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+/// The names of E's values (its name table, sinew/core/enum_names.hpp) as allowed values.
+template <NamedEnum E>
+std::vector<json> allowed_names() {
+  std::vector<json> names;
+  for (const auto& entry : enum_names(E{})) names.emplace_back(std::string(entry.second));
+  return names;
+}
+
+/// A string naming one of E's values, `fallback_value` when omitted.
+template <NamedEnum E>
+Key choice(std::string key, std::string doc, E fallback_value) {
+  return string(std::move(key), std::move(doc)).allowed(allowed_names<E>()).fallback(std::string(name_of(fallback_value)));
+}
+
+/// The name of `value` as a std::string (for keys and tags named by an enum's name table).
+template <NamedEnum E>
+std::string key_of(E value) {
+  return std::string(name_of(value));
+}
 
 }  // namespace sinew::scene::schema_builder

@@ -39,7 +39,7 @@ class CholmodSolver final : public LinearSolver {
     stats.relative_residual = relative_residual(K_, x, b);
     return stats;
   }
-  const char* name() const override { return "cholmod"; }
+  const char* name() const override { return name_of(LinearSolverOptions::Kind::Cholmod).data(); }
 
  private:
   /// CHOLMOD reports a failed allocation in its status; Eigen folds it into "not positive
@@ -97,11 +97,11 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& opti
       return std::make_unique<CholmodSolver>();
     case Kind::Gmres:
       return std::make_unique<IterativeSolver<Eigen::GMRES<SparseMatrix, Eigen::DiagonalPreconditioner<double>>>>(
-          options, "gmres");
+          options, name_of(Kind::Gmres).data());
     case Kind::ConjugateGradient:
       return std::make_unique<IterativeSolver<
           Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>>>>(
-          options, "cg");
+          options, name_of(Kind::ConjugateGradient).data());
   }
   return nullptr;
 }

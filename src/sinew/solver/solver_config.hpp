@@ -2,6 +2,8 @@
 /// @file solver_config.hpp
 /// Options of the static solver (paper section 3.2, dissertation Fig. 12).
 
+#include "sinew/core/enum_names.hpp"
+
 namespace sinew::solver {
 
 struct LinearSolverOptions {
@@ -25,7 +27,7 @@ struct NewtonOptions {
   LineSearchRule line_search = LineSearchRule::Energy;
   int max_line_search_steps = 30;  ///< halvings before the iteration fails
   /// Quasi-viscosity K + D/dt with D_a = quasi_viscosity * (volume around node a)^(1/3)
-  /// (stress unit times length). 0 disables it.
+  /// (stress unit, the seed's dt = 1). 0 disables it. At most 1e-3 x the smallest shear modulus (docs/solver.md).
   double quasi_viscosity = 0;
   /// Project each element's dP/dF onto the positive semi-definite cone before assembly.
   bool project_element_hessians = false;
@@ -48,6 +50,29 @@ struct LoadSteppingOptions {
   /// need 25-35 % fewer Newton iterations than the seed's two-point extrapolation on the examples.
   Predictor predictor = Predictor::Tangent;
 };
+
+/// Scene names of LinearSolverOptions::Kind.
+inline constexpr NameTable<LinearSolverOptions::Kind, 3> kLinearSolverNames{{
+    {LinearSolverOptions::Kind::Cholmod, "cholmod"},
+    {LinearSolverOptions::Kind::Gmres, "gmres"},
+    {LinearSolverOptions::Kind::ConjugateGradient, "cg"},
+}};
+constexpr const auto& enum_names(LinearSolverOptions::Kind) { return kLinearSolverNames; }
+
+/// Scene names of NewtonOptions::LineSearchRule.
+inline constexpr NameTable<NewtonOptions::LineSearchRule, 2> kLineSearchNames{{
+    {NewtonOptions::LineSearchRule::Energy, "energy"},
+    {NewtonOptions::LineSearchRule::Residual, "residual"},
+}};
+constexpr const auto& enum_names(NewtonOptions::LineSearchRule) { return kLineSearchNames; }
+
+/// Scene names of LoadSteppingOptions::Predictor.
+inline constexpr NameTable<LoadSteppingOptions::Predictor, 3> kPredictorNames{{
+    {LoadSteppingOptions::Predictor::None, "none"},
+    {LoadSteppingOptions::Predictor::TwoPoint, "two-point"},
+    {LoadSteppingOptions::Predictor::Tangent, "tangent"},
+}};
+constexpr const auto& enum_names(LoadSteppingOptions::Predictor) { return kPredictorNames; }
 
 struct StaticSolverOptions {
   LinearSolverOptions linear;
@@ -79,5 +104,13 @@ struct DynamicOptions {
   double explicit_safety = 0.5;  ///< explicit step = this fraction of the critical step (0, 1]
   int explicit_rebuild_every = 20;  ///< explicit: contact BVH rebuilt every this many steps
 };
+
+/// Scene names of DynamicOptions::Integrator.
+inline constexpr NameTable<DynamicOptions::Integrator, 3> kIntegratorNames{{
+    {DynamicOptions::Integrator::ImplicitEuler, "implicit-euler"},
+    {DynamicOptions::Integrator::Quasistatic, "quasistatic"},
+    {DynamicOptions::Integrator::Explicit, "explicit"},
+}};
+constexpr const auto& enum_names(DynamicOptions::Integrator) { return kIntegratorNames; }
 
 }  // namespace sinew::solver

@@ -1,0 +1,133 @@
+/// @file scene_schema_body.cpp
+/// The scene schema of a body: its mesh, placement, regions and material depth.
+
+#include "sinew/scene/scene_schema_parts.hpp"
+
+#include "sinew/mesh/generate.hpp"
+#include "sinew/scene/scene_config.hpp"
+#include "sinew/scene/schema_bounds.hpp"
+#include "sinew/scene/schema_builder.hpp"
+
+namespace sinew::scene::schema_parts {
+
+using namespace schema_builder;  // NOLINT(google-build-using-namespace)
+using namespace schema_bounds;   // NOLINT(google-build-using-namespace)
+using nlohmann::json;
+
+SchemaNode body_schema() {
+  using Rigid = fem::RigidBody::Kind;
+  const MeshSourceConfig mesh_defaults;
+  const mesh::GenerateOptions generate_defaults;
+  const RegionConfig region_defaults;
+  return object(
+      "", "A solid body: its mesh, placement and what each mesh region is made of",
+      {
+          string("name", "unique body name; regions and sets are called \"<body>/<name>\" in outputs")
+              .required()
+              .non_empty(),
+          one_of("mesh", "where the tetrahedral mesh comes from",
+                 {
+                     string("file", "Gmsh .msh file (format 2 or 4); relative paths start at the scene file's directory")
+                         .non_empty(),
+                     object("generate", "mesh primitive solids with Gmsh (OpenCASCADE)",
+                            {
+                                number("element_size", "target tet edge length (length)").required().min(kMinElementSize).max(kMaxLength),
+                                integer("optimize_passes", "Gmsh tet optimization passes")
+                                    .min(0)
+                                    .max(100)
+                                    .fallback(generate_defaults.optimize_passes),
+                                number("elements_per_turn",
+                                       "curved surfaces get at least this many elements per full turn, down to "
+                                       "element_size / 10 (thin rods: lower it); 0 = element_size alone")
+                                    .min(0)
+                                    .max(1000)
+                                    .fallback(generate_defaults.elements_per_turn),
+                                array("parts",
+                                      "named solids, each a region; fragmented into one conforming mesh (where they "
+                                      "overlap, the first listed wins); each part's boundary is also the face set "
+                                      "\"<region>.surface\"",
+                                      object("", "a named solid",
+                                             {
+                                                 string("region", "region name of this part").required().non_empty(),
+                                                 ref("shape", "its solid", "shape").required(),
+                                             }))
+                                    .required()
+                                    .items(1),
+                            }),
+                 },
+                 {"file", "generate"})
+              .required(),
+          object("transform", "rigid placement of the mesh: rotate about the origin, then translate",
+                 {
+                     vec3("translate", "translation (length)").within(kMaxLength).fallback(vec3_json(mesh_defaults.translate)),
+                     object("rotate", "rotation about an axis through the origin",
+                            {
+                                vec3("axis", "rotation axis").nonzero().within(kMaxLength).fallback(vec3_json(mesh_defaults.rotate_axis)),
+                                number("angle_deg", "angle (degrees, right-hand rule)").within(kMaxAngle).fallback(mesh_defaults.rotate_angle),
+                            })
+                         .fallback(json::object()),
+                 })
+              .fallback(json::object()),
+          map("regions",
+              "mesh region name -> what it is made of; the entry \"*\" applies to every mesh region without its own "
+              "entry",
+              object("", "a deformable region (\"material\") or a rigid one (\"rigid\")",
+                     {
+                         string("material", "name of a material (a key of \"materials\"); omit for rigid regions")
+                             .non_empty(),
+                         either("rigid",
+                                "the region moves as one rigid body: \"fixed\" (stays in place), \"free\" (moved by "
+                                "contact and loads) or {\"prescribed\": motion}",
+                                {
+                                    string("", "fixed or free").allowed({key_of(Rigid::Fixed), key_of(Rigid::Free)}),
+                                    one_of("", "a prescribed rigid motion",
+                                           {ref(key_of(Rigid::Prescribed), "the motion", "motion")},
+                                           {key_of(Rigid::Prescribed)}),
+                                }),
+                         number("density", "mass per rest volume (mass / length^3)")
+                             .max(kMaxPhysical)
+                             .min(0)
+                             .fallback(region_defaults.density),
+                         vec3("fiber_direction", "overrides the material's fiber direction in this region").nonzero().within(kMaxLength),
+                         number("contact_penalty_scale",
+                                "factor on the contact penalty where this region's surface or tets take part; two "
+                                "parts in contact use the smaller of their factors, so stiff parts (e.g. two rigid "
+                                "bones) can meet with a stiffer penalty than soft tissue against either")
+                             .max(kMaxScale)
+                             .above(0)
+                             .fallback(region_defaults.contact_penalty_scale),
+                     }))
+              .required()
+              .items(1),
+          object("contact",
+                 "how this body's material depth is defined (used when the scene has a \"contact\" section); by "
+                 "default the depth of a node is its rest distance to the body's whole boundary",
+                 {
+                     string("depth_face_set",
+                            "measure depth from this face set only (a mesh face set of the body, or "
+                            "\"<region>.surface\" of a generated part)")
+                         .non_empty(),
+                     string("depth_region",
+                            "measure depth from the boundary faces of the tets of this region only")
+                         .non_empty(),
+                     array("depth_nodes",
+                           "measure depth from the boundary faces whose three nodes are all chosen by one of these "
+                           "selectors (e.g. a plane: only the face that touches; symmetry planes and free sides then "
+                           "do not count)",
+                           ref("", "a node selector (its \"body\" is this body)", "node_selector"))
+                         .items(1),
+                     string("depth_file",
+                            "nodal depths instead (text: one number per node of the body's mesh, in mesh order; "
+                            "relative paths start at the scene file's directory)")
+                         .non_empty(),
+                     string("depth_field",
+                            "nodal depths instead, from this node field of the body's mesh file (a Gmsh "
+                            "$NodeData view of this name: one scalar per node, its first time step; every "
+                            "node of the mesh needs a finite value >= 0)")
+                         .non_empty(),
+                 })
+              .fallback(json::object()),
+      });
+}
+
+}  // namespace sinew::scene::schema_parts

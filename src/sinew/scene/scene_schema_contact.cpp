@@ -1,0 +1,55 @@
+/// @file scene_schema_contact.cpp
+/// The scene schema of the contact section (docs/theory.md).
+
+#include "sinew/scene/scene_schema_parts.hpp"
+
+#include "sinew/scene/scene_config.hpp"
+#include "sinew/scene/schema_bounds.hpp"
+#include "sinew/scene/schema_builder.hpp"
+
+namespace sinew::scene::schema_parts {
+
+using namespace schema_builder;  // NOLINT(google-build-using-namespace)
+using namespace schema_bounds;   // NOLINT(google-build-using-namespace)
+using nlohmann::json;
+
+SchemaNode contact_schema() {
+  const ContactConfig defaults;
+  return object(
+      "contact",
+      "material-depth contact between all bodies, self-contact included (docs/theory.md): the energy "
+      "(penalty/2) * integral of depth^2 over every boundary-triangle / tet intersection. Omit for no contact.",
+      {
+          choice("method",
+                 "\"area\": exact integral over triangle-tet intersections (continuous forces); "
+                 "\"point\": the seed's collocation at triangle vertices (baseline)",
+                 defaults.method),
+          choice("hessian",
+                 "contact stiffness: \"exact\" (the exact second derivative), \"projected\" (exact, each pair "
+                 "projected onto the positive semi-definite cone) or \"gauss-newton\" (positive semi-definite, "
+                 "frozen areas; cheapest, converges slowly where contact areas change)",
+                 defaults.hessian),
+          number("penalty",
+                 "penalty for every pair of bodies (force / length^3: a penetration g meets a pressure of about "
+                 "penalty * g); default: penalty_scale * E / h per pair of bodies")
+              .max(kMaxPenalty)
+              .above(0),
+          number("penalty_scale",
+                 "automatic penalty = penalty_scale * E / h, E the smaller initial Young's modulus of the two bodies "
+                 "(rigid bodies take the other's), h the smaller mean boundary edge length")
+              .max(kMaxScale)
+              .above(0)
+              .fallback(defaults.penalty_scale),
+          boolean("self_contact", "a body's surface may also penetrate the same body").fallback(defaults.self_contact),
+          array("pairs", "per pair of bodies: a penalty of its own, or no contact",
+                object("", "one pair of bodies (the same name twice for self-contact)",
+                       {
+                           array("bodies", "two body names", string("", "body name").non_empty()).required().items(2, 2),
+                           number("penalty", "penalty of this pair (force / length^3)").above(0).max(kMaxPenalty),
+                           boolean("enabled", "false: these bodies do not touch").fallback(true),
+                       }))
+              .fallback(json::array()),
+      });
+}
+
+}  // namespace sinew::scene::schema_parts
