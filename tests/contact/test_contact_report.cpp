@@ -16,13 +16,7 @@ namespace sinew::contact {
 namespace {
 
 namespace st = sinew::testing;
-
-NodalVectors gradient_at(ContactEnergy& energy, const Positions& x) {
-  energy.update(x);
-  NodalVectors g = NodalVectors::Zero(x.rows(), 3);
-  energy.add_gradient(x, g);
-  return g;
-}
+using st::gradient_at;
 
 class ContactReportMethods : public ::testing::TestWithParam<ContactMethod> {};
 

@@ -1,9 +1,12 @@
 #pragma once
 /// @file contact_fixtures.hpp
 /// Shared configurations for the contact tests: two overlapping structured boxes (bodies 0 and
-/// 1) as one ContactGeometry, and a random intersecting triangle-tet pair.
+/// 1) as one ContactGeometry, a random intersecting triangle-tet pair, and the gradient and
+/// Hessian of a contact energy at a configuration.
 
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "sinew/collision/material_depth.hpp"
 #include "sinew/contact/contact_energy.hpp"
@@ -59,6 +62,25 @@ inline Eigen::VectorXd flatten(const Positions& x) {
 }
 inline Positions unflatten(const Eigen::VectorXd& v) {
   return Eigen::Map<const Positions>(v.data(), v.size() / 3, 3);
+}
+
+/// -dEc/dx... as the energy adds it: the gradient of `energy` at x (#V x 3), after update(x).
+inline NodalVectors gradient_at(contact::ContactEnergy& energy, const Positions& x) {
+  energy.update(x);
+  NodalVectors g = NodalVectors::Zero(x.rows(), 3);
+  energy.add_gradient(x, g);
+  return g;
+}
+
+/// The dense Hessian of `energy` at x (3#V x 3#V), after update(x).
+inline MatrixX hessian_at(contact::ContactEnergy& energy, const Positions& x) {
+  energy.update(x);
+  std::vector<std::pair<Index, Index>> pairs;
+  energy.hessian_pattern(pairs);
+  BlockSparseMatrix H;
+  H.set_pattern(static_cast<Index>(x.rows()), pairs);
+  energy.add_hessian(x, H);
+  return H.to_dense();
 }
 
 }  // namespace sinew::testing
