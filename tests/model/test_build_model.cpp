@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "scene/scene_test_support.hpp"
+#include "support/contact_scenes.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/model/solve_model.hpp"
 #include "sinew/scene/load_scene.hpp"
@@ -18,24 +19,12 @@ namespace {
 using nlohmann::json;
 using ::testing::HasSubstr;
 
-/// A soft box [0,1]^2 x [0,0.5] resting on a rigid plate.
+/// A soft box [0,1]^2 x [0,0.5] (density 1) resting on a rigid plate, under gravity.
 json contact_scene() {
-  return json::parse(R"({
-    "units": "m, N, Pa",
-    "materials": {"gel": {"law": "neo-hookean", "mu": 1.0, "lambda": 10.0}},
-    "bodies": [
-      {"name": "box",
-       "mesh": {"generate": {"element_size": 0.25, "parts": [
-         {"region": "gel", "shape": {"box": {"min": [0, 0, 0], "max": [1, 1, 0.5]}}}]}},
-       "regions": {"gel": {"material": "gel", "density": 1.0}}},
-      {"name": "plate",
-       "mesh": {"generate": {"element_size": 0.5, "parts": [
-         {"region": "plate", "shape": {"box": {"min": [-1, -1, -1], "max": [2, 2, 0]}}}]}},
-       "regions": {"plate": {"rigid": "fixed"}}}
-    ],
-    "loads": {"gravity": [0, 0, -0.5]},
-    "contact": {}
-  })");
+  json scene = sinew::testing::box_on_plate_scene();
+  scene["bodies"][0]["regions"]["gel"]["density"] = 1.0;
+  scene["loads"] = {{"gravity", {0, 0, -0.5}}};
+  return scene;
 }
 
 Model build(const json& scene) { return build_model(scene::parse_scene(scene, "")); }

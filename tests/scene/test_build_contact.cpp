@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "scene/scene_test_support.hpp"
+#include "support/contact_scenes.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/scene/build_contact.hpp"
 #include "sinew/scene/build_problem.hpp"
@@ -25,23 +26,7 @@ using nlohmann::json;
 using ::testing::HasSubstr;
 
 /// A soft box [0,1]^2 x [0,0.5] and a rigid plate below it.
-json contact_scene() {
-  return json::parse(R"({
-    "units": "m, N, Pa",
-    "materials": {"gel": {"law": "neo-hookean", "mu": 1.0, "lambda": 10.0}},
-    "bodies": [
-      {"name": "box",
-       "mesh": {"generate": {"element_size": 0.25, "parts": [
-         {"region": "gel", "shape": {"box": {"min": [0, 0, 0], "max": [1, 1, 0.5]}}}]}},
-       "regions": {"gel": {"material": "gel"}}},
-      {"name": "plate",
-       "mesh": {"generate": {"element_size": 0.5, "parts": [
-         {"region": "plate", "shape": {"box": {"min": [-1, -1, -1], "max": [2, 2, 0]}}}]}},
-       "regions": {"plate": {"rigid": "fixed"}}}
-    ],
-    "contact": {}
-  })");
-}
+json contact_scene() { return sinew::testing::box_on_plate_scene(); }
 
 ContactSetup build(const json& scene_json) {
   const SceneConfig scene = parse_scene(scene_json, "");
