@@ -20,6 +20,7 @@
 #include <new>
 
 #include "sinew/core/error.hpp"
+#include "sinew/surface/reader_guards.hpp"
 
 namespace sinew::surface {
 namespace {
@@ -118,11 +119,49 @@ void append_instance(const SurfaceFile& file, const aiMesh& mesh, const Eigen::M
   }
 }
 
+/// Checks the faces of the scene as the format reader left it, before any post-processing step
+/// reads vertices through them (Assimp's readers do not all check the indices), and sets each
+/// mesh's primitive types from its faces (a reader may leave them unset, and Assimp 5.2's
+/// triangulation then aborts on an assertion for faces of fewer than three corners).
+void check_faces(const SurfaceFile& file, aiScene& scene) {
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    if (scene.mMeshes[m] == nullptr) continue;
+    aiMesh& mesh = *scene.mMeshes[m];
+    unsigned types = 0;
+    if (mesh.mNumFaces > 0 && mesh.mFaces == nullptr) {
+      throw InputError(fmt::format("surface file '{}', mesh '{}': faces without indices", file.path, mesh_name(mesh, m)));
+    }
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices > 0 && face.mIndices == nullptr) {
+        throw InputError(fmt::format("surface file '{}', mesh '{}': face {} without indices", file.path,
+                                     mesh_name(mesh, m), f));
+      }
+      if (face.mNumIndices == 0) {
+        throw InputError(fmt::format("surface file '{}', mesh '{}': face {} has no corners", file.path,
+                                     mesh_name(mesh, m), f));
+      }
+      types |= face.mNumIndices == 1   ? aiPrimitiveType_POINT
+               : face.mNumIndices == 2 ? aiPrimitiveType_LINE
+               : face.mNumIndices == 3 ? aiPrimitiveType_TRIANGLE
+                                       : aiPrimitiveType_POLYGON;
+      for (unsigned k = 0; k < face.mNumIndices; ++k) {
+        if (face.mIndices[k] >= mesh.mNumVertices) {
+          throw InputError(fmt::format("surface file '{}', mesh '{}': face {} refers to vertex {} of {}", file.path,
+                                       mesh_name(mesh, m), f, face.mIndices[k], mesh.mNumVertices));
+        }
+      }
+    }
+    mesh.mPrimitiveTypes = types;
+  }
+}
+
 }  // namespace
 
 std::vector<ImportedMesh> import_meshes(const SurfaceFile& file) {
   // The importer sees the file's own name (its extension picks the reader); any other name it
   // asks for is refused.
+  check_reader_guards(file);
   std::string name = std::filesystem::path(file.path).filename().string();
   name = std::filesystem::path(name).stem().string() + file.extension;
   Assimp::Importer importer;
@@ -131,10 +170,17 @@ std::vector<ImportedMesh> import_meshes(const SurfaceFile& file) {
   const aiScene* scene = nullptr;
   std::string error;
   try {
-    scene = importer.ReadFile(name, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+    // Read without post-processing, check the indices, then triangulate and join.
+    scene = importer.ReadFile(name, 0);
+    if (scene != nullptr) {
+      check_faces(file, *const_cast<aiScene*>(scene));  // the importer's own scene, not yet post-processed
+      scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+    }
     if (scene == nullptr) error = importer.GetErrorString();
   } catch (const std::bad_alloc&) {
     throw InputError(fmt::format("surface file '{}': out of memory while reading it", file.path));
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
     error = e.what();
   }
