@@ -11,6 +11,7 @@ PACKAGES=(
   libopenblas0-pthread   # an optimized BLAS: CHOLMOD's supernodal factorization is ~10x slower on reference BLAS
   libgmsh-dev gmsh       # Gmsh C++ API: OpenCASCADE geometry, meshing, .msh reading
   libtbb-dev             # parallel assembly
+  libassimp-dev          # surface meshes in: STL, OBJ, PLY, glTF/GLB
   nlohmann-json3-dev     # scene files
   libcli11-dev           # command line
   libfmt-dev libspdlog-dev  # formatting and logging

@@ -160,5 +160,12 @@ TEST(ReadSurface, ExternalBufferIsRefused) {
   }
 }
 
+TEST(ReadSurface, ObjMaterialLibraryIsNotRead) {
+  TempDir dir;
+  dir.write("look.mtl", "newmtl red\nKd 1 0 0\n");
+  const std::string path = dir.write("cube.obj", "mtllib look.mtl\n" + fx::obj(fx::unit_cube()));
+  expect_closed_cube(read_surface(path));  // the surface is read; the library beside it is not opened
+}
+
 }  // namespace
 }  // namespace sinew::surface
