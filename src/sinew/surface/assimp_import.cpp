@@ -184,7 +184,8 @@ std::vector<ImportedMesh> import_meshes(const SurfaceFile& file) {
   } catch (const std::exception& e) {
     error = e.what();
   }
-  if (!io->refused().empty()) {
+  // An .obj's material library only colours it: refused, and the geometry is read without it.
+  if (!io->refused().empty() && (scene == nullptr || file.extension != ".obj")) {
     throw InputError(fmt::format(
         "surface file '{}' refers to another file '{}': external files are refused; embed the buffers "
         "(a .glb, or data: URIs in a .gltf)",

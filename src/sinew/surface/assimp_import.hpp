@@ -21,10 +21,11 @@ struct ImportedMesh {
 /// Imports every mesh of `file` through Assimp (aiProcess_Triangulate |
 /// aiProcess_JoinIdenticalVertices only). Meshes of the same name (a glTF mesh's primitives)
 /// form one ImportedMesh; a mesh referenced by several nodes gets every instance, one referenced
-/// by none is taken as it is. Only `file.bytes` is read: any other file the format refers to
-/// (a .gltf's external buffer, an .obj's material library) is refused. Throws InputError naming
-/// the file on a parse failure (with Assimp's message), an external reference, or a file
-/// without meshes; names the mesh for a non-finite coordinate or an index out of range.
+/// by none is taken as it is. Only `file.bytes` is read: any other file the format refers to is
+/// refused (a .gltf's external buffer: an error; an .obj's material library: read without it).
+/// Throws InputError naming the file on a parse failure (with Assimp's message), an external
+/// reference, or a file without meshes; names the mesh for a non-finite coordinate or an index
+/// out of range.
 std::vector<ImportedMesh> import_meshes(const SurfaceFile& file);
 
 }  // namespace sinew::surface
