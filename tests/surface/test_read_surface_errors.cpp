@@ -140,6 +140,21 @@ TEST(ReadSurfaceErrors, BadRotationOrTranslation) {
   EXPECT_THAT(error_of(path, {.translation = Vector3(0, std::nan(""), 0)}), HasSubstr("translation must be finite"));
 }
 
+TEST(ReadSurfaceErrors, AssimpPrintsNothing) {
+  TempDir dir;
+  const std::string good = dir.write("cube.obj", "mtllib missing.mtl\n" + fx::obj(fx::unit_cube()));
+  const std::string bad = dir.write("junk.glb", "glTF not really");
+  ::testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  read_surface(good);
+  const std::string message = error_of(bad);
+  const std::string out = ::testing::internal::GetCapturedStdout();
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_THAT(message, HasSubstr("junk.glb"));
+  EXPECT_EQ(out, "");
+  EXPECT_EQ(err, "");
+}
+
 TEST(ReadSurfaceErrors, MeshNamesOfABadFile) {
   TempDir dir;
   EXPECT_THROW(surface_mesh_names(dir.file("none.glb")), InputError);

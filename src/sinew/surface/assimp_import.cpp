@@ -15,8 +15,8 @@
 #include <exception>
 #include <filesystem>
 #include <fmt/format.h>
-#include <map>
 #include <limits>
+#include <map>
 #include <new>
 
 #include "sinew/core/error.hpp"
