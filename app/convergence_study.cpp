@@ -44,8 +44,6 @@ std::string penalty_label(double penalty) { return fmt::format("{:g}", penalty);
 
 void check_options(const scene::SceneConfig& scene, const model::Model& model, const ConvergenceStudyOptions& o) {
   const fem::Problem& problem = *model.problem;
-  if (!scene.contact.enabled)
-    throw InputError(fmt::format("study convergence: scene \"{}\" has no contact section", scene.name));
   if (o.penalties.empty()) throw InputError("study convergence: no penalties given");
   for (double p : o.penalties)
     if (!(p >= 0) || !std::isfinite(p))

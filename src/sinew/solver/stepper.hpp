@@ -99,7 +99,10 @@ class StepScheme {
   /// A step from `current` failed: undo what predict() set up for the objective.
   virtual void reject(const fem::State& current) = 0;
   /// Nodal velocities of the last accepted state (#V x 3), or 0 rows.
-  virtual NodalVectors velocity() const { return {}; }
+  virtual const NodalVectors& velocity() const {
+    static const NodalVectors none;
+    return none;
+  }
   /// Largest step from t not above `h` whose prescribed rotations stay within the per-step
   /// bound (prescribed_turn.hpp); below `smallest` means none.
   virtual double bound_step(double t, double h, double smallest) const = 0;

@@ -56,7 +56,7 @@ class ImplicitTimeStepping final : public StepScheme {
 
   void reject(const fem::State& current) override { objective_.set_load_parameter(current.lambda); }
 
-  NodalVectors velocity() const override { return velocity_; }
+  const NodalVectors& velocity() const override { return velocity_; }
 
   double bound_step(double t, double h, double smallest) const override {
     const double T = end_time_;
