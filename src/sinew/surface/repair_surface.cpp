@@ -1,0 +1,102 @@
+/// @file repair_surface.cpp
+/// CGAL Polygon Mesh Processing behind repair_surface and find_self_intersections.
+
+#include "sinew/surface/repair_surface.hpp"
+
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+
+#include <algorithm>
+#include <array>
+#include <iterator>
+#include <set>
+
+#include "sinew/surface/cgal_surface.hpp"
+
+namespace sinew::surface {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+namespace {
+
+/// Triangles kept after dropping repeated-vertex, zero-area and duplicate ones.
+Triangles clean_triangles(const SurfaceMesh& surface, const RepairOptions& options, RepairReport& report) {
+  double mean_edge = 0;
+  for (Index t = 0; t < surface.triangles.rows(); ++t) {
+    mean_edge += (surface.vertices.row(surface.triangles(t, 1)) - surface.vertices.row(surface.triangles(t, 0))).norm();
+  }
+  if (surface.triangles.rows() > 0) mean_edge /= static_cast<double>(surface.triangles.rows());
+  const double min_area = 1e-12 * mean_edge * mean_edge;
+  std::set<std::array<Index, 3>> seen;
+  std::vector<Index> kept;
+  for (Index t = 0; t < surface.triangles.rows(); ++t) {
+    const Index a = surface.triangles(t, 0), b = surface.triangles(t, 1), c = surface.triangles(t, 2);
+    if (options.drop_degenerate) {
+      const Vector3 e1 = (surface.vertices.row(b) - surface.vertices.row(a)).transpose();
+      const Vector3 e2 = (surface.vertices.row(c) - surface.vertices.row(a)).transpose();
+      if (a == b || b == c || a == c || 0.5 * e1.cross(e2).norm() <= min_area) {
+        ++report.degenerate_dropped;
+        continue;
+      }
+    }
+    if (options.drop_duplicates) {
+      std::array<Index, 3> key{a, b, c};
+      std::sort(key.begin(), key.end());
+      if (!seen.insert(key).second) {
+        ++report.duplicates_dropped;
+        continue;
+      }
+    }
+    kept.push_back(t);
+  }
+  Triangles triangles(static_cast<Index>(kept.size()), 3);
+  for (std::size_t i = 0; i < kept.size(); ++i) triangles.row(static_cast<Index>(i)) = surface.triangles.row(kept[i]);
+  return triangles;
+}
+
+}  // namespace
+
+SurfaceMesh repair_surface(const SurfaceMesh& surface, const RepairOptions& options, RepairReport* report_out) {
+  RepairReport report;
+  SurfaceMesh cleaned = surface;
+  cleaned.triangles = clean_triangles(surface, options, report);
+  cgal::Mesh mesh = cgal::to_cgal(cleaned, &report.non_manifold_dropped);
+  if (options.fill_holes) {
+    std::vector<cgal::Mesh::Halfedge_index> loops;
+    PMP::extract_boundary_cycles(mesh, std::back_inserter(loops));
+    for (const auto h : loops) {
+      std::vector<cgal::Mesh::Face_index> patch;
+      std::vector<cgal::Mesh::Vertex_index> added;
+      PMP::triangulate_and_refine_hole(mesh, h, std::back_inserter(patch), std::back_inserter(added));
+      if (!patch.empty()) {
+        ++report.holes_filled;
+        report.triangles_added += static_cast<Index>(patch.size());
+      }
+    }
+  }
+  if (report_out != nullptr) *report_out = report;
+  return cgal::from_cgal(mesh, surface.name);
+}
+
+std::vector<SelfIntersection> find_self_intersections(const SurfaceMesh& surface, std::size_t limit) {
+  const cgal::Mesh mesh = cgal::to_cgal(surface);
+  std::vector<std::pair<cgal::Mesh::Face_index, cgal::Mesh::Face_index>> pairs;
+  PMP::self_intersections(mesh, std::back_inserter(pairs));
+  std::vector<SelfIntersection> found;
+  for (const auto& [a, b] : pairs) {
+    if (limit != 0 && found.size() >= limit) break;
+    SelfIntersection hit;
+    hit.triangle_a = static_cast<Index>(a.idx());
+    hit.triangle_b = static_cast<Index>(b.idx());
+    Vector3 centroid = Vector3::Zero();
+    for (const auto face : {a, b}) {
+      for (const auto v : CGAL::vertices_around_face(mesh.halfedge(face), mesh)) centroid += cgal::to_vector(mesh.point(v));
+    }
+    hit.location = centroid / 6.0;
+    found.push_back(hit);
+  }
+  return found;
+}
+
+}  // namespace sinew::surface
