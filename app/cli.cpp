@@ -31,12 +31,25 @@ namespace {
 struct SceneOverrides {
   double element_size = 0;
   double max_tets = 0;
+  std::string data_directory;  ///< replaces the scene's data_dir when set
 };
 
 scene::SceneConfig with_overrides(scene::SceneConfig config, const SceneOverrides& overrides) {
-  if (overrides.element_size > 0)
-    for (auto& body : config.bodies)
-      if (body.mesh.file.empty()) body.mesh.generate.element_size = overrides.element_size;
+  if (overrides.element_size > 0) {
+    for (auto& body : config.bodies) {
+      if (body.mesh.surfaces) {
+        // The size zones keep their ratio to the element size.
+        surface::TetrahedralizeOptions& options = body.mesh.surfaces->options;
+        const double ratio = overrides.element_size / options.element_size;
+        options.element_size = overrides.element_size;
+        options.facet_distance *= ratio;
+        for (surface::SizeZone& zone : options.size_zones) zone.size *= ratio;
+      } else if (body.mesh.file.empty()) {
+        body.mesh.generate.element_size = overrides.element_size;
+      }
+    }
+  }
+  if (!overrides.data_directory.empty()) config.data_directory = overrides.data_directory;
   if (overrides.max_tets > 0) config.limits.max_tets = overrides.max_tets;
   return config;
 }
@@ -122,18 +135,22 @@ int run_commands(int argc, char** argv) {
                 "write is never emptied)");
   SceneOverrides overrides;
   const std::string element_size_help =
-      "override the element_size of every generated mesh (length): the same scene coarser or finer";
+      "override the element_size of every generated or surface mesh (length): the same scene coarser or finer (size "
+      "zones keep their ratio to it)";
+  const std::string data_dir_help = "directory of the scene's surface files (replaces its \"data_dir\")";
   const std::string max_tets_help = fmt::format(
       "refuse a generated body whose estimated tetrahedron count exceeds this before meshing (default {:g})",
       scene::ResourceLimits{}.max_tets);
   run->add_option("--element-size", overrides.element_size, element_size_help)->check(kFinitePositive);
   run->add_option("--max-tets", overrides.max_tets, max_tets_help)->check(kFinitePositive);
+  run->add_option("--data-dir", overrides.data_directory, data_dir_help);
 
   auto* validate = cli.add_subcommand("validate", "check a scene (schema, meshes, constraints) without solving");
   std::string validate_path;
   validate->add_option("scene", validate_path, "scene file (JSON)")->required();
   validate->add_option("--element-size", overrides.element_size, element_size_help)->check(kFinitePositive);
   validate->add_option("--max-tets", overrides.max_tets, max_tets_help)->check(kFinitePositive);
+  validate->add_option("--data-dir", overrides.data_directory, data_dir_help);
 
   auto* schema = cli.add_subcommand("schema", "print the scene format");
   bool markdown = false, json = false;

@@ -13,6 +13,7 @@
 #include "sinew/material/material_spec.hpp"
 #include "sinew/mesh/generate.hpp"
 #include "sinew/mesh/read_msh.hpp"
+#include "sinew/scene/build_surface_mesh.hpp"
 #include "sinew/scene/resource_estimate.hpp"
 #include "sinew/scene/schema.hpp"
 
@@ -123,8 +124,14 @@ class ProblemBuilder {
     const std::string path = body_path(b);
     PlacedBody body;
     try {
-      body.mesh = config.mesh.file.empty() ? mesh::generate_mesh(config.mesh.parts, config.mesh.generate)
-                                           : mesh::read_msh(config.mesh.file);
+      if (config.mesh.surfaces) {
+        SurfaceMeshConfig surfaces = *config.mesh.surfaces;
+        surfaces.options.what = "body \"" + config.name + "\"";
+        body.mesh = build_surface_mesh(surfaces, scene_.data_directory.empty() ? scene_.base_directory : scene_.data_directory);
+      } else {
+        body.mesh = config.mesh.file.empty() ? mesh::generate_mesh(config.mesh.parts, config.mesh.generate)
+                                             : mesh::read_msh(config.mesh.file);
+      }
     } catch (const InputError& e) {
       error(json_path_key(path, "mesh"), e.what());
       return body;

@@ -55,6 +55,7 @@ class SceneReader {
     config.description = scene.at("description").get<std::string>();
     config.units = scene.at("units").get<std::string>();
     config.base_directory = base_directory_;
+    if (scene.contains("data_dir")) config.data_directory = resolve(scene.at("data_dir").get<std::string>());
 
     for (const auto& [name, material] : scene.at("materials").items()) {
       config.materials[name] = read_material(material, json_path_key("materials", name));
@@ -176,6 +177,8 @@ class SceneReader {
       } else if (!std::filesystem::is_regular_file(mesh.file, ec)) {
         error(json_path_key(mesh_path, "file"), "not a regular file: " + mesh.file);
       }
+    } else if (source.contains("surfaces")) {
+      mesh.surfaces = read_surface_mesh(source.at("surfaces"), json_path_key(mesh_path, "surfaces"), errors);
     } else {
       const json& generate = source.at("generate");
       const std::string generate_path = json_path_key(mesh_path, "generate");

@@ -14,14 +14,34 @@
 #include "sinew/mesh/generate.hpp"
 #include "sinew/fem/mass_matrix.hpp"
 #include "sinew/solver/solver_config.hpp"
+#include "sinew/surface/repair_surface.hpp"
+#include "sinew/surface/tetrahedralize.hpp"
 
 namespace sinew::scene {
 
-/// A body's mesh: a Gmsh file or generated parts, then an optional rigid placement.
+/// One mesh of a surface file, placed in the scene: x = unit_scale x_file + translate.
+struct SurfaceFileConfig {
+  std::string file;        ///< as written: relative paths resolve against SceneConfig::data_directory
+  std::string mesh_name;   ///< empty = the file's only mesh
+  double unit_scale = 1;
+  Vector3 translate = Vector3::Zero();
+  std::optional<surface::RepairOptions> repair;  ///< none = used as read
+  std::string source;      ///< where a user gets the file (for the missing-file message)
+};
+
+/// A mesh of regions bounded by closed surfaces (docs/surface-input.md).
+struct SurfaceMeshConfig {
+  std::map<std::string, SurfaceFileConfig> surfaces;  ///< by name
+  std::vector<surface::SolidPart> parts;
+  surface::TetrahedralizeOptions options;
+};
+
+/// A body's mesh: a Gmsh file, generated parts or surface parts, then an optional rigid placement.
 struct MeshSourceConfig {
   std::string file;                 ///< absolute, or resolved against the scene's directory
   std::vector<mesh::Part> parts;    ///< when file is empty
   mesh::GenerateOptions generate;
+  std::optional<SurfaceMeshConfig> surfaces;  ///< when set, the mesh is made from surfaces
   Vector3 translate = Vector3::Zero();  ///< applied after rotate
   Vector3 rotate_axis = Vector3::UnitZ();
   double rotate_angle = 0;              ///< radians, about rotate_axis through the origin
@@ -163,6 +183,9 @@ struct SceneConfig {
   std::string description;
   std::string units;            ///< free text, e.g. "mm, N, MPa, s" (documentation only)
   std::string base_directory;   ///< directory of the scene file (relative paths resolve here)
+  /// Directory of surface files: the scene's data_dir resolved against base_directory (or the
+  /// command line's --data-dir); empty = base_directory.
+  std::string data_directory;
   std::map<std::string, material::MaterialSpec> materials;
   std::vector<BodyConfig> bodies;
   std::vector<BoundaryConditionConfig> boundary_conditions;

@@ -65,6 +65,12 @@ fem::RigidMotion read_motion(const json& j, const std::string& path, ReadErrors&
 /// A solid of a generated mesh: a primitive or a boolean of shapes, with its transform.
 mesh::Shape read_shape(const json& j, const std::string& path, ReadErrors& errors);
 
+/// A solid of a mesh made from surfaces (read_surface_mesh.cpp).
+surface::Solid read_solid(const json& j, const std::string& path, ReadErrors& errors);
+
+/// A body's "surfaces" mesh source; every surface name a part or size zone uses must be declared.
+SurfaceMeshConfig read_surface_mesh(const json& j, const std::string& path, ReadErrors& errors);
+
 /// The "solver" section.
 solver::StaticSolverOptions read_solver(const json& j, ReadErrors& errors);
 

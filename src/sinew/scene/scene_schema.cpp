@@ -28,6 +28,10 @@ Schema build_scene_schema() {
                                   "converts nothing)")
                                .required()
                                .non_empty(),
+                           string("data_dir",
+                                  "directory of surface files (relative: to the scene file's directory); the command "
+                                  "line's --data-dir replaces it")
+                               .non_empty(),
                            map("materials", "material name -> law and parameters", material_schema())
                                .fallback(json::object()),
                            array("bodies", "the solids", body_schema()).required().items(1),
@@ -43,6 +47,7 @@ Schema build_scene_schema() {
   schema.definitions["motion"] = motion_definition();
   schema.definitions["amplitude"] = amplitude_definition();
   schema.definitions["shape"] = shape_definition();
+  schema.definitions["solid"] = solid_definition();
   return schema;
 }
 

@@ -7,12 +7,88 @@
 #include "sinew/scene/scene_config.hpp"
 #include "sinew/scene/schema_bounds.hpp"
 #include "sinew/scene/schema_builder.hpp"
+#include "sinew/surface/repair_surface.hpp"
+#include "sinew/surface/tetrahedralize.hpp"
 
 namespace sinew::scene::schema_parts {
 
 using namespace schema_builder;  // NOLINT(google-build-using-namespace)
 using namespace schema_bounds;   // NOLINT(google-build-using-namespace)
 using nlohmann::json;
+
+namespace {
+
+SchemaNode surfaces_mesh_schema() {
+  const surface::TetrahedralizeOptions defaults;
+  const surface::SizeZone zone_defaults;
+  const surface::RepairOptions repair_defaults;
+  return object(
+      "surfaces",
+      "mesh regions bounded by closed triangle surfaces (STL, OBJ, PLY, glTF/GLB) with CGAL Mesh_3: one "
+      "conforming mesh, one region per part (docs/surface-input.md)",
+      {
+          number("element_size", "target tet edge length away from size zones (length)").required().min(kMinElementSize).max(kMaxLength),
+          number("facet_distance",
+                 "largest distance between a boundary triangle and the surface it approximates (length); 0 = "
+                 "element_size / 20")
+              .min(0)
+              .max(kMaxLength)
+              .fallback(defaults.facet_distance),
+          number("min_dihedral_deg",
+                 "fail when a tet's smallest dihedral angle stays below this after sliver removal (degrees); 0 = "
+                 "report only")
+              .min(0)
+              .max(60)
+              .fallback(defaults.min_dihedral_deg),
+          map("surfaces", "surface name -> where it comes from",
+              object("", "one mesh of a surface file, placed in the scene",
+                     {
+                         string("file",
+                                "surface file; relative paths start at the scene's data_dir (or the scene file's "
+                                "directory)")
+                             .required()
+                             .non_empty(),
+                         string("mesh", "the named mesh of a file with several (glTF); omit for a file with one").non_empty(),
+                         number("unit_scale", "file units -> scene units (1000 for a file in m and a scene in mm)")
+                             .above(0)
+                             .max(kMaxScale)
+                             .fallback(1.0),
+                         vec3("translate", "translation after the scale (length)").within(kMaxLength).fallback(vec3_json(Vector3::Zero())),
+                         object("repair", "repair before use",
+                                {
+                                    boolean("drop_degenerate", "drop triangles of zero area").fallback(repair_defaults.drop_degenerate),
+                                    boolean("drop_duplicates", "drop repeated triangles").fallback(repair_defaults.drop_duplicates),
+                                    boolean("fill_holes", "close every hole with a refined patch").fallback(repair_defaults.fill_holes),
+                                }),
+                         string("source", "where a user gets the file, printed when it is missing").non_empty(),
+                     }))
+              .required()
+              .items(1),
+          array("parts",
+                "named solids, each a region of one conforming mesh; where they overlap, the first listed wins; each "
+                "region's boundary is also the face set \"<region>.surface\"",
+                object("", "a named solid",
+                       {
+                           string("region", "region name of this part").required().non_empty(),
+                           ref("solid", "its solid", "solid").required(),
+                       }))
+              .required()
+              .items(1),
+          array("size_zones", "finer elements near some surfaces: size + grading x distance, up to element_size",
+                object("", "a size zone",
+                       {
+                           array("surfaces", "surface names", string("", "a surface name").non_empty()).required().items(1),
+                           number("size", "element size on those surfaces (length)").required().min(kMinElementSize).max(kMaxLength),
+                           number("grading", "growth of the size per unit distance (dimensionless)")
+                               .min(0)
+                               .max(100)
+                               .fallback(zone_defaults.grading),
+                       }))
+              .fallback(json::array()),
+      });
+}
+
+}  // namespace
 
 SchemaNode body_schema() {
   using Rigid = fem::RigidBody::Kind;
@@ -54,8 +130,9 @@ SchemaNode body_schema() {
                                     .required()
                                     .items(1),
                             }),
+                     surfaces_mesh_schema(),
                  },
-                 {"file", "generate"})
+                 {"file", "generate", "surfaces"})
               .required(),
           object("transform", "rigid placement of the mesh: rotate about the origin, then translate",
                  {

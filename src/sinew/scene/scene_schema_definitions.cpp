@@ -8,6 +8,7 @@
 #include "sinew/scene/scene_config.hpp"
 #include "sinew/scene/schema_bounds.hpp"
 #include "sinew/scene/schema_builder.hpp"
+#include "sinew/surface/solid.hpp"
 
 namespace sinew::scene::schema_parts {
 
@@ -143,6 +144,56 @@ SchemaNode shape_definition() {
                            }),
                 },
                 names_of<Shape>());
+}
+
+SchemaNode solid_definition() {
+  using Solid = surface::Solid::Kind;
+  const surface::Solid defaults;
+  SchemaNode surface_names = array("surfaces", "names of closed surfaces (keys of \"surfaces\")",
+                                   string("", "a surface name").non_empty())
+                                 .required()
+                                 .items(1);
+  return one_of(
+      "",
+      "A solid of a mesh made from surfaces: a closed surface, a primitive, an offset or a boolean; a point set, so "
+      "crops (intersection with a half_space) and booleans are exact and the mesher makes the caps",
+      {
+          string(key_of(Solid::Surface), "the inside of a closed surface (a key of \"surfaces\")").non_empty(),
+          object(key_of(Solid::Offset),
+                 "the points within distance of the union of surfaces or inside it (distance > 0: a hull around "
+                 "parts; < 0: the inside shrunk by -distance, e.g. under a skin layer)",
+                 {
+                     surface_names,
+                     number("distance", "offset (length)").required().within(kMaxLength),
+                 }),
+          object(key_of(Solid::Box), "axis-aligned box",
+                 {
+                     vec3("min", "lower corner (length)").required().within(kMaxLength),
+                     vec3("max", "upper corner, > min componentwise (length)").required().within(kMaxLength),
+                 }),
+          object(key_of(Solid::Capsule), "the points within radius of the segment a-b (a rod with round ends)",
+                 {
+                     vec3("a", "one end of the axis (length)").required().within(kMaxLength),
+                     vec3("b", "the other end (length)").required().within(kMaxLength),
+                     number("radius", "radius (length)").required().above(0).max(kMaxLength),
+                 }),
+          object(key_of(Solid::Ellipsoid), "ellipsoid with semi-axes along axis_u, axis_v and axis_u x axis_v",
+                 {
+                     vec3("center", "centre (length)").required().within(kMaxLength),
+                     vec3("semi_axes", "semi-axis lengths (length)").required().within(kMaxLength),
+                     vec3("axis_u", "first axis").nonzero().within(kMaxLength).fallback(vec3_json(defaults.axis_u)),
+                     vec3("axis_v", "second axis (made orthogonal to axis_u)").nonzero().within(kMaxLength).fallback(vec3_json(defaults.axis_v)),
+                 }),
+          object(key_of(Solid::HalfSpace), "the points x with (x - point) . normal <= 0: intersect with it to crop",
+                 {
+                     vec3("point", "a point of the plane (length)").required().within(kMaxLength),
+                     vec3("normal", "outward normal of the kept side").required().nonzero().within(kMaxLength),
+                 }),
+          array(key_of(Solid::Union), "in any of the solids", ref("", "", "solid")).items(1),
+          array(key_of(Solid::Difference), "in the first solid and in none of the others", ref("", "", "solid")).items(2),
+          array(key_of(Solid::Intersection), "in all of the solids", ref("", "", "solid")).items(2),
+      },
+      names_of<Solid>());
 }
 
 }  // namespace sinew::scene::schema_parts

@@ -15,6 +15,7 @@ SchemaNode amplitude_definition();
 SchemaNode motion_definition();
 SchemaNode node_selector_definition();
 SchemaNode shape_definition();
+SchemaNode solid_definition();
 
 // Top-level keys.
 SchemaNode material_schema();            ///< a value of "materials"

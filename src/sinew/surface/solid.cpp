@@ -102,7 +102,10 @@ bool solid_contains(const Solid& solid, const SurfaceLibrary& library, const Vec
         }
         return false;
       }
-      return union_signed_distance(solid.surfaces, library, x) <= solid.distance;
+      // Shrunk: inside one of the surfaces and farther than -distance from every one of them.
+      bool inside = false;
+      for (const std::string& name : solid.surfaces) inside = inside || find_surface(library, name).contains(x);
+      return inside && union_signed_distance(solid.surfaces, library, x) <= solid.distance;
     }
     case Kind::Box:
       return (x.array() >= solid.min.array()).all() && (x.array() <= solid.max.array()).all();

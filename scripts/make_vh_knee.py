@@ -1,0 +1,171 @@
+#!/usr/bin/env python3
+"""Writes examples/vh-knee-flexion.json: the seed's knee flexion (dissertation section 7, paper
+section 6) on the Visible Human Male's right knee and skin (HRA 3D Reference Object Library v1.1,
+docs/vh-knee.md), meshed by sinew from the surfaces.
+
+Usage: /usr/bin/python3 scripts/make_vh_knee.py [--element-size H] [--increments N] [--angle DEG] [--out PATH]
+
+The scene works in the data's own frame, in mm (the files are in metres: unit_scale 1000): +y up,
++z anterior, +x to the subject's left (medial for this right leg). Stresses in kPa (Table 2 read
+as kPa), forces in mN. The landmark coordinates below were measured on the HRA meshes (their
+vertex extremes and the centroids of the enthesis patches); the construction is documented in
+docs/vh-knee.md.
+
+Bodies:
+  femur   rigid, fixed: VH_M_femur_R (3 holes filled) below the thigh's cut
+  leg     one body, its parts bonded (shared nodes), first listed wins where they overlap:
+    tibia     rigid, prescribed: VH_M_tibia_R and VH_M_fibula_R above the shank's cut, turned 150
+              degrees about the axis through the femoral epicondyles in 50 increments of 3
+    patella   rigid, free: VH_M_patella_R
+    ligament  patellar ligament (tendon): a rod from the patella's apex to the tibial tuberosity
+    tendon    quadriceps tendon, then the graded tissues of Table 2 (graded_2, graded_1): rods
+    graded_2  up the front of the femur from the patella's base
+    graded_1
+    muscle    everything inside the skin-fat layer not taken above: the quadriceps, vasti and
+              hamstrings of the thigh and the muscles of the shank (the data has none)
+    skin      skin-fat: the skin cropped 200 mm above and below the joint line, a layer
+              SKIN_FAT mm thick (Mooney-Rivlin 5 / 1 / 50 kPa)
+  Every soft part keeps GAP mm from the femur, which it slides on (contact); the bonded parts
+  have no gaps, so the leg has no voids. The thigh's cut moves only in its plane.
+Left out: the menisci and the articular cartilage (docs/vh-knee.md says why).
+"""
+import argparse
+import json
+import pathlib
+
+JOINT_Y = -420.0          # the joint line (mm)
+CROP = 200.0              # the leg is kept this far above and below it (mm)
+SKIN_FAT = 8.0            # the skin-fat layer's thickness (mm)
+GAP = 2.0                 # the soft tissue's distance from the femur (mm)
+FEMUR_PENALTY = 2000.0    # contact penalty femur / leg (kPa per mm of depth)
+LEG_PENALTY = 300.0       # contact penalty of the leg on itself
+STIFF_SCALE = 5.0         # penalty factor of the bones and tendons
+LATERAL_EPICONDYLE = [-172.85, -385.48, -25.22]  # centroid of VH_M_lateral_epicondylar_enthesis_R
+MEDIAL_EPICONDYLE = [-87.83, -393.84, -26.16]    # centroid of VH_M_medial_epicondylar_enthesis_R
+PATELLA_APEX = [-150.65, -406.23, 41.35]         # lowest vertex of VH_M_patella_R
+PATELLA_BASE = [-148.07, -360.14, 39.62]         # highest vertex of VH_M_patella_R
+TUBEROSITY = [-154.32, -460.66, 16.97]           # most anterior vertex of VH_M_tibia_R, 40-60 mm below the joint
+KNEE_SOURCE = ("HRA 3D Reference Object Library v1.1, 'VH_M_Knee_R.glb' (3D Reference Organ for Knee, Male, "
+               "Right; https://doi.org/10.48539/HBM546.WMLL.993, https://humanatlas.io/3d-reference-library)")
+SKIN_SOURCE = ("HRA 3D Reference Object Library v1.1, 'VH_M_Skin.glb' (3D Reference Organ for Skin, Male; "
+               "HuBMAP ID HBM592.CTHB.237, https://humanatlas.io/3d-reference-library)")
+
+
+def surface(name):
+    return {"surface": name}
+
+
+def capsule(a, b, radius):
+    return {"capsule": {"a": a, "b": b, "radius": radius}}
+
+
+def inside_leg(solid):
+    """The solid, cropped to the leg between the cuts and kept GAP away from the femur."""
+    crop = [{"half_space": {"point": [0, JOINT_Y + CROP, 0], "normal": [0, 1, 0]}},
+            {"half_space": {"point": [0, JOINT_Y - CROP, 0], "normal": [0, -1, 0]}},
+            {"half_space": {"point": [0, 0, 0], "normal": [1, 0, 0]}},  # the right leg only (x < 0)
+            surface("skin")]
+    # Cheap tests first: a point fails the crop before the costly distance queries are made.
+    return {"difference": [{"intersection": crop + [solid]}, {"offset": {"surfaces": ["femur"], "distance": GAP}}]}
+
+
+def lerp(a, b, s):
+    return [a[i] + s * (b[i] - a[i]) for i in range(3)]
+
+
+def scene(element_size, increments, angle_deg=150.0):
+    h = element_size
+    knee = {"file": "VH_M_Knee_R.glb", "unit_scale": 1000.0, "source": KNEE_SOURCE}
+    surfaces = {
+        "femur": dict(knee, mesh="VH_M_femur_R", repair={"fill_holes": True}),
+        "tibia": dict(knee, mesh="VH_M_tibia_R"),
+        "fibula": dict(knee, mesh="VH_M_fibula_R"),
+        "patella": dict(knee, mesh="VH_M_patella_R"),
+        "skin": {"file": "VH_M_Skin.glb", "unit_scale": 1000.0, "source": SKIN_SOURCE},
+    }
+    axis = [MEDIAL_EPICONDYLE[i] - LATERAL_EPICONDYLE[i] for i in range(3)]
+    # The quadriceps tendon and the graded tissues: rods up the front of the femur from the
+    # patella's base (the femur's anterior surface is at z ~ 15 mm from y = -350 up).
+    base = [PATELLA_BASE[0], PATELLA_BASE[1] - 4, PATELLA_BASE[2] - 8]
+    t1, t2, t3 = [-134.0, -320.0, 27.0], [-131.0, -300.0, 28.0], [-130.0, -280.0, 29.0]
+    fiber_up = [0.0, 1.0, 0.0]
+    ligament_dir = [PATELLA_APEX[i] - TUBEROSITY[i] for i in range(3)]
+    leg_parts = [
+        {"region": "tibia", "solid": {"intersection": [
+            {"union": [surface("tibia"), surface("fibula")]},
+            {"half_space": {"point": [0, JOINT_Y - CROP, 0], "normal": [0, -1, 0]}}]}},
+        {"region": "patella", "solid": surface("patella")},
+        {"region": "ligament", "solid": inside_leg(capsule(lerp(PATELLA_APEX, PATELLA_BASE, 0.15), lerp(TUBEROSITY, PATELLA_APEX, 0.05), 5.0))},
+        {"region": "tendon", "solid": inside_leg(capsule(base, t1, 7.0))},
+        {"region": "graded_2", "solid": inside_leg(capsule(t1, t2, 9.0))},
+        {"region": "graded_1", "solid": inside_leg(capsule(t2, t3, 11.0))},
+        {"region": "muscle", "solid": inside_leg({"offset": {"surfaces": ["skin"], "distance": -SKIN_FAT}})},
+        {"region": "skin", "solid": inside_leg(surface("skin"))},
+    ]
+    fine = {"surfaces": ["patella", "femur"], "size": round(0.4 * h, 3), "grading": 0.3}
+    return {
+        "name": "vh-knee-flexion",
+        "description": "The seed's knee flexion on the Visible Human Male's right knee and skin (HRA 3D reference organs), "
+                       "meshed from the surfaces (scripts/make_vh_knee.py, docs/vh-knee.md): rigid femur fixed, rigid "
+                       "tibia and fibula turned 150 degrees about the epicondylar axis in 3-degree increments, rigid "
+                       "patella free, held by the patellar ligament and the quadriceps tendon; Table 2's graded tissues "
+                       "and muscle; skin-fat bonded to the tibia and the muscle. Frictionless material-depth contact "
+                       "between every pair of parts and self-contact of the skin.",
+        "units": "mm, mN, kPa",
+        "data_dir": "../../shared/data/vh-knee",
+        "materials": {
+            "tendon": {"law": "veronda-westmann", "alpha": 1400.0, "beta": 8.0, "a": 1000.0,
+                       "fiber": {"alpha": 500.0, "beta": 2.0, "direction": fiber_up}},
+            "graded_2": {"law": "veronda-westmann", "alpha": 350.0, "beta": 8.0, "a": 500.0,
+                         "fiber": {"alpha": 150.0, "beta": 2.0, "direction": fiber_up}},
+            "graded_1": {"law": "veronda-westmann", "alpha": 14.0, "beta": 8.0, "a": 200.0,
+                         "fiber": {"alpha": 20.0, "beta": 2.0, "direction": fiber_up}},
+            "muscle": {"law": "veronda-westmann", "alpha": 7.0, "beta": 8.0, "a": 100.0,
+                       "fiber": {"alpha": 5.0, "beta": 2.0, "direction": fiber_up}},
+            "skin": {"law": "mooney-rivlin", "C1": 5.0, "C2": 1.0, "a": 50.0},
+        },
+        "bodies": [
+            {"name": "femur",
+             "mesh": {"surfaces": {"element_size": h, "facet_distance": round(h / 30, 4), "surfaces": {"femur": surfaces["femur"]},
+                                   "parts": [{"region": "femur", "solid": {"intersection": [
+                                       surface("femur"), {"half_space": {"point": [0, JOINT_Y + CROP, 0], "normal": [0, 1, 0]}}]}}],
+                                   "size_zones": [{"surfaces": ["femur"], "size": fine["size"], "grading": 0.3}]}},
+             "regions": {"femur": {"rigid": "fixed", "contact_penalty_scale": STIFF_SCALE}}},
+            {"name": "leg",
+             "mesh": {"surfaces": {"element_size": h, "facet_distance": round(h / 30, 4), "surfaces": surfaces,
+                                   "parts": leg_parts, "size_zones": [fine]}},
+             "regions": {
+                 "tibia": {"rigid": {"prescribed": {"rotation": {"axis": axis, "point": LATERAL_EPICONDYLE, "angle_deg": angle_deg}}},
+                           "contact_penalty_scale": STIFF_SCALE},
+                 "patella": {"rigid": "free", "contact_penalty_scale": STIFF_SCALE},
+                 "ligament": {"material": "tendon", "fiber_direction": ligament_dir, "contact_penalty_scale": STIFF_SCALE},
+                 "tendon": {"material": "tendon", "contact_penalty_scale": STIFF_SCALE},
+                 "graded_2": {"material": "graded_2"},
+                 "graded_1": {"material": "graded_1"},
+                 "muscle": {"material": "muscle"},
+                 "skin": {"material": "skin"}}},
+        ],
+        "boundary_conditions": [
+            {"name": "thigh_cut", "type": "planar", "normal": [0, 1, 0],
+             "nodes": {"body": "leg", "plane": {"point": [0, JOINT_Y + CROP, 0], "normal": [0, 1, 0], "tolerance": round(h / 10, 3)}}},
+        ],
+        "contact": {"self_contact": True, "pairs": [
+            {"bodies": ["femur", "leg"], "penalty": FEMUR_PENALTY},
+            {"bodies": ["leg", "leg"], "penalty": LEG_PENALTY}]},
+        "solver": {"increments": increments},
+        "output": {"vtu": True},
+    }
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--element-size", type=float, default=14.0)
+    parser.add_argument("--increments", type=int, default=50)
+    parser.add_argument("--angle", type=float, default=150.0, help="final knee flexion (degrees)")
+    parser.add_argument("--out", default=str(pathlib.Path(__file__).resolve().parent.parent / "examples" / "vh-knee-flexion.json"))
+    args = parser.parse_args()
+    pathlib.Path(args.out).write_text(json.dumps(scene(args.element_size, args.increments, args.angle), indent=1) + "\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,73 @@
+/// @file build_surface_mesh.cpp
+
+#include "sinew/scene/build_surface_mesh.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "sinew/core/error.hpp"
+#include "sinew/core/log.hpp"
+#include "sinew/surface/read_surface.hpp"
+#include "sinew/surface/repair_surface.hpp"
+
+namespace sinew::scene {
+
+namespace {
+
+std::string describe(const std::string& name, const SurfaceFileConfig& file) {
+  std::string text = "surface \"" + name + "\" (" + file.file;
+  if (!file.mesh_name.empty()) text += ", mesh " + file.mesh_name;
+  return text + ")";
+}
+
+surface::ClosedSurface load_surface(const std::string& name, const SurfaceFileConfig& file, const std::string& directory) {
+  const std::string what = describe(name, file);
+  std::filesystem::path path(file.file);
+  if (path.is_relative() && !directory.empty()) path = std::filesystem::path(directory) / path;
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    std::string message = what + ": file not found: " + path.lexically_normal().string();
+    if (!file.source.empty()) message += "; get it from: " + file.source;
+    message += " (the scene's \"data_dir\" or the command line's --data-dir says where surface files are)";
+    throw InputError(message);
+  }
+  surface::SurfaceReadOptions read;
+  read.mesh_name = file.mesh_name;
+  read.unit_scale = file.unit_scale;
+  read.translation = file.translate;
+  surface::SurfaceMesh mesh = surface::read_surface(path.string(), read);
+  if (file.repair) {
+    surface::RepairReport report;
+    mesh = surface::repair_surface(mesh, *file.repair, &report);
+    logger().info("{}: repaired: {} degenerate and {} duplicate triangles dropped, {} holes filled with {} triangles",
+                  what, report.degenerate_dropped, report.duplicates_dropped, report.holes_filled, report.triangles_added);
+  }
+  surface::ClosedSurface closed(mesh, what);
+  const std::vector<surface::SelfIntersection> crossings = surface::find_self_intersections(closed.mesh(), 3);
+  if (!crossings.empty()) {
+    const Vector3& at = crossings.front().location;
+    throw InputError(fmt::format("{}: the surface intersects itself (triangles {} and {} cross near ({:.6g}, {:.6g}, {:.6g})); "
+                                 "a region needs a surface that bounds a solid",
+                                 what, crossings.front().triangle_a, crossings.front().triangle_b, at.x(), at.y(), at.z()));
+  }
+  return closed;
+}
+
+}  // namespace
+
+mesh::TetMesh build_surface_mesh(const SurfaceMeshConfig& config, const std::string& directory) {
+  surface::SurfaceLibrary library;
+  for (const auto& [name, file] : config.surfaces) library.emplace(name, load_surface(name, file, directory));
+  surface::TetrahedralizeReport report;
+  mesh::TetMesh result = surface::tetrahedralize(config.parts, library, config.options, &report);
+  logger().info("{}: {} nodes, {} tets in {:.2f} s; smallest dihedral angle {:.2f} deg, worst radius ratio {:.3f}, {} slivers (< 5 deg)",
+                config.options.what, result.num_nodes(), result.num_tets(), report.seconds, report.quality.min_dihedral_deg,
+                report.quality.worst_radius_ratio, report.quality.slivers);
+  for (std::size_t r = 0; r < config.parts.size(); ++r) {
+    logger().info("  region {}: {} tets, volume {:.6g}", config.parts[r].region, report.tets_per_region[r], report.region_volumes[r]);
+  }
+  return result;
+}
+
+}  // namespace sinew::scene
