@@ -37,6 +37,9 @@ JOINT_Y = -420.0          # the joint line (mm)
 CROP = 200.0              # the leg is kept this far above and below it (mm)
 SKIN_FAT = 8.0            # the skin-fat layer's thickness (mm)
 GAP = 2.0                 # the soft tissue's distance from the femur (mm)
+CARTILAGE = 3.0           # the patella's articular cartilage, rigid with it (mm)
+PF_CAVITY = 14.0          # reach of the patellofemoral joint space (mm)
+TF_CAVITY = 10.0          # reach of the tibiofemoral joint space (mm)
 FEMUR_PENALTY = 2000.0    # contact penalty femur / leg (kPa per mm of depth)
 LEG_PENALTY = 300.0       # contact penalty of the leg on itself
 STIFF_SCALE = 5.0         # penalty factor of the bones and tendons
@@ -66,7 +69,16 @@ def inside_leg(solid):
             {"half_space": {"point": [0, 0, 0], "normal": [1, 0, 0]}},  # the right leg only (x < 0)
             surface("skin")]
     # Cheap tests first: a point fails the crop before the costly distance queries are made.
-    return {"difference": [{"intersection": crop + [solid]}, {"offset": {"surfaces": ["femur"], "distance": GAP}}]}
+    return {"difference": [{"intersection": crop + [solid]}, {"offset": {"surfaces": ["femur"], "distance": GAP}},
+                           joint_cavity("patella", PF_CAVITY), joint_cavity("tibia", TF_CAVITY)]}
+
+
+def joint_cavity(bone, reach):
+    """The joint space between a bone and the femur (points within `reach` of both): no soft tissue
+    there, so the bones meet each other (through the patella's cartilage) instead of crushing tissue
+    bonded to them."""
+    return {"intersection": [{"offset": {"surfaces": [bone], "distance": reach}},
+                             {"offset": {"surfaces": ["femur"], "distance": reach}}]}
 
 
 def lerp(a, b, s):
@@ -94,7 +106,7 @@ def scene(element_size, increments, angle_deg=150.0):
         {"region": "tibia", "solid": {"intersection": [
             {"union": [surface("tibia"), surface("fibula")]},
             {"half_space": {"point": [0, JOINT_Y - CROP, 0], "normal": [0, -1, 0]}}]}},
-        {"region": "patella", "solid": surface("patella")},
+        {"region": "patella", "solid": {"offset": {"surfaces": ["patella"], "distance": CARTILAGE}}},
         {"region": "ligament", "solid": inside_leg(capsule(lerp(PATELLA_APEX, PATELLA_BASE, 0.15), lerp(TUBEROSITY, PATELLA_APEX, 0.05), 5.0))},
         {"region": "tendon", "solid": inside_leg(capsule(base, t1, 7.0))},
         {"region": "graded_2", "solid": inside_leg(capsule(t1, t2, 9.0))},

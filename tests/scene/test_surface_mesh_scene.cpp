@@ -111,5 +111,15 @@ TEST(SurfaceMeshScene, PartHiddenByAnEarlierOneIsReported) {
   EXPECT_THAT(message, HasSubstr("part \"core\" got no elements"));
 }
 
+TEST(SurfaceMeshScene, TooFineAMeshIsRefusedBeforeMeshing) {
+  const sinew::testing::TempDir dir;
+  sinew::testing::write_text(dir.path() / "cube.stl", sinew::testing::ascii_stl(sinew::testing::unit_cube()));
+  json scene = cube_scene(dir.path().string());
+  scene["bodies"][0]["mesh"]["surfaces"]["element_size"] = 0.01;  // ~1e7 tets in a 10 mm cube
+  const std::string message = build_error(scene, dir.path().string());
+  EXPECT_THAT(message, HasSubstr("exceed the limit of 3e+06 tets"));
+  EXPECT_THAT(message, HasSubstr("--max-tets"));
+}
+
 }  // namespace
 }  // namespace sinew::scene

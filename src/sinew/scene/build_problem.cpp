@@ -127,6 +127,7 @@ class ProblemBuilder {
       if (config.mesh.surfaces) {
         SurfaceMeshConfig surfaces = *config.mesh.surfaces;
         surfaces.options.what = "body \"" + config.name + "\"";
+        surfaces.options.max_tets = scene_.limits.max_tets;
         body.mesh = build_surface_mesh(surfaces, scene_.data_directory.empty() ? scene_.base_directory : scene_.data_directory);
       } else {
         body.mesh = config.mesh.file.empty() ? mesh::generate_mesh(config.mesh.parts, config.mesh.generate)

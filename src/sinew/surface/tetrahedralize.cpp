@@ -17,6 +17,8 @@
 #include <functional>
 #include <map>
 
+#include <fmt/format.h>
+
 #include "sinew/core/error.hpp"
 #include "sinew/core/stopwatch.hpp"
 #include "sinew/surface/cgal_surface.hpp"
@@ -168,7 +170,34 @@ void add_region_surfaces(mesh::TetMesh& result) {
   }
 }
 
+double surface_area(const SurfaceMesh& mesh) {
+  double area = 0;
+  for (Index t = 0; t < mesh.triangles.rows(); ++t) {
+    const Vector3 a = mesh.vertices.row(mesh.triangles(t, 0)).transpose();
+    const Vector3 b = mesh.vertices.row(mesh.triangles(t, 1)).transpose();
+    const Vector3 c = mesh.vertices.row(mesh.triangles(t, 2)).transpose();
+    area += 0.5 * (b - a).cross(c - a).norm();
+  }
+  return area;
+}
+
 }  // namespace
+
+double estimated_tets(const std::vector<SolidPart>& parts, const SurfaceLibrary& library,
+                      const TetrahedralizeOptions& options) {
+  constexpr double kTetsPerEdgeCubed = 8.48528137423857;  // 6 sqrt(2): regular tets of edge h per h^3
+  const Bounds bounds = domain_bounds(parts, library, options.what);
+  const Vector3 extent = bounds.max - bounds.min;
+  double tets = kTetsPerEdgeCubed * extent.prod() / std::pow(options.element_size, 3);
+  for (const SizeZone& zone : options.size_zones) {
+    if (!(zone.size < options.element_size)) continue;
+    for (const std::string& name : zone.surfaces) {
+      if (library.count(name) == 0) continue;
+      tets += kTetsPerEdgeCubed * surface_area(library.at(name).mesh()) / (zone.size * zone.size);
+    }
+  }
+  return tets;
+}
 
 mesh::TetMesh tetrahedralize(const std::vector<SolidPart>& parts, const SurfaceLibrary& library,
                              const TetrahedralizeOptions& options, TetrahedralizeReport* report) {
@@ -178,6 +207,19 @@ mesh::TetMesh tetrahedralize(const std::vector<SolidPart>& parts, const SurfaceL
   if (!(options.element_size > 0)) throw InputError(what + ": element_size must be > 0");
   for (const SolidPart& part : parts) check_solid(part.solid, library, what + ": part \"" + part.region + "\"");
   const Bounds bounds = domain_bounds(parts, library, what);
+  for (const SizeZone& zone : options.size_zones) {
+    for (const std::string& name : zone.surfaces) {
+      if (library.count(name) == 0) throw InputError(what + ": a size zone names an unknown surface \"" + name + "\"");
+    }
+  }
+  if (options.max_tets > 0) {
+    const double estimate = estimated_tets(parts, library, options);
+    if (estimate > options.max_tets) {
+      throw InputError(fmt::format("{}: an estimated {:.3g} tets at element_size {:g} exceed the limit of {:.3g} tets "
+                                   "(raise it with --max-tets); or raise element_size",
+                                   what, estimate, options.element_size, options.max_tets));
+    }
+  }
   const Vector3 pad = Vector3::Constant(options.element_size);
   const CGAL::Bbox_3 box(bounds.min.x() - pad.x(), bounds.min.y() - pad.y(), bounds.min.z() - pad.z(),
                          bounds.max.x() + pad.x(), bounds.max.y() + pad.y(), bounds.max.z() + pad.z());

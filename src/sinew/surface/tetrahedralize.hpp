@@ -35,6 +35,8 @@ struct TetrahedralizeOptions {
   /// Tets whose smallest dihedral angle stays below this after sliver exudation (degrees) make
   /// the mesh fail with a message; 0 = report only.
   double min_dihedral_deg = 0;
+  /// Refuse before meshing when the estimate (estimated_tets) exceeds this; 0 = no limit.
+  double max_tets = 0;
   std::string what = "mesh";   ///< names the mesh in messages (e.g. the body)
 };
 
@@ -45,6 +47,12 @@ struct TetrahedralizeReport {
   std::vector<double> region_volumes;    ///< by region id (length^3)
   double seconds = 0;                    ///< wall time of meshing
 };
+
+/// An order of magnitude of the tets tetrahedralize makes, before meshing: 6 sqrt(2) V / h^3
+/// over the parts' bounding box V at element_size h, plus 6 sqrt(2) A / s^2 for every size zone
+/// of size s on surfaces of area A. An upper estimate for parts that fill their box loosely.
+double estimated_tets(const std::vector<SolidPart>& parts, const SurfaceLibrary& library,
+                      const TetrahedralizeOptions& options);
 
 /// Meshes the parts into one conforming TetMesh with one region per part, in part order (where
 /// parts overlap, the first listed wins). The boundary of every region is the face set
