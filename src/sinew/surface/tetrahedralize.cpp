@@ -213,8 +213,11 @@ mesh::TetMesh tetrahedralize(const std::vector<SolidPart>& parts, const SurfaceL
   padded.extend(bounds.min - pad);
   padded.extend(bounds.max + pad);
   seed_interfaces(complex, domain, label, padded, spacing, 64);
+  // Without a time limit of their own, perturb and exude stop after as much wall time as the
+  // refinement took: the mesh would depend on the machine's load. 0 = until they are done.
   CGAL::refine_mesh_3(complex, domain, criteria, CGAL::parameters::no_lloyd(), CGAL::parameters::no_odt(),
-                      CGAL::parameters::perturb(), CGAL::parameters::exude());
+                      CGAL::parameters::perturb(CGAL::parameters::time_limit = 0, CGAL::parameters::sliver_bound = 8),
+                      CGAL::parameters::exude(CGAL::parameters::time_limit = 0, CGAL::parameters::sliver_bound = 15));
   mesh::TetMesh result = extract_mesh(complex, parts);
 
   TetrahedralizeReport made;
