@@ -6,6 +6,7 @@
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <array>
@@ -55,6 +56,36 @@ Triangles clean_triangles(const SurfaceMesh& surface, const RepairOptions& optio
   return triangles;
 }
 
+cgal::Kernel::Triangle_3 triangle_of(const cgal::Mesh& mesh, cgal::Mesh::Face_index face) {
+  const auto h = mesh.halfedge(face);
+  return {mesh.point(mesh.source(h)), mesh.point(mesh.target(h)), mesh.point(mesh.target(mesh.next(h)))};
+}
+
+/// A point of both triangles: the mean of the corners of their intersection (a point, segment,
+/// triangle or convex polygon); the mean of their six corners if the inexact construction
+/// finds none.
+Vector3 crossing_point(const cgal::Mesh& mesh, cgal::Mesh::Face_index a, cgal::Mesh::Face_index b) {
+  const cgal::Kernel::Triangle_3 ta = triangle_of(mesh, a), tb = triangle_of(mesh, b);
+  std::vector<cgal::Point> corners;
+  if (const auto result = CGAL::intersection(ta, tb)) {  // a boost::variant (CGAL 5)
+    if (const auto* point = boost::get<cgal::Point>(&*result)) {
+      corners.push_back(*point);
+    } else if (const auto* segment = boost::get<cgal::Kernel::Segment_3>(&*result)) {
+      corners.insert(corners.end(), {segment->source(), segment->target()});
+    } else if (const auto* triangle = boost::get<cgal::Kernel::Triangle_3>(&*result)) {
+      corners.insert(corners.end(), {triangle->vertex(0), triangle->vertex(1), triangle->vertex(2)});
+    } else if (const auto* polygon = boost::get<std::vector<cgal::Point>>(&*result)) {
+      corners = *polygon;
+    }
+  }
+  if (corners.empty()) {
+    for (int k = 0; k < 3; ++k) corners.insert(corners.end(), {ta.vertex(k), tb.vertex(k)});
+  }
+  Vector3 sum = Vector3::Zero();
+  for (const cgal::Point& p : corners) sum += cgal::to_vector(p);
+  return sum / static_cast<double>(corners.size());
+}
+
 }  // namespace
 
 SurfaceMesh repair_surface(const SurfaceMesh& surface, const RepairOptions& options, RepairReport* report_out) {
@@ -89,11 +120,7 @@ std::vector<SelfIntersection> find_self_intersections(const SurfaceMesh& surface
     SelfIntersection hit;
     hit.triangle_a = static_cast<Index>(a.idx());
     hit.triangle_b = static_cast<Index>(b.idx());
-    Vector3 centroid = Vector3::Zero();
-    for (const auto face : {a, b}) {
-      for (const auto v : CGAL::vertices_around_face(mesh.halfedge(face), mesh)) centroid += cgal::to_vector(mesh.point(v));
-    }
-    hit.location = centroid / 6.0;
+    hit.location = crossing_point(mesh, a, b);
     found.push_back(hit);
   }
   return found;

@@ -20,7 +20,7 @@ struct RepairOptions {
 /// Two triangles of one surface that cross each other, and a point where they do.
 struct SelfIntersection {
   Index triangle_a = 0, triangle_b = 0;  ///< 0-based indices among the surface's manifold triangles
-  Vector3 location = Vector3::Zero();     ///< the centroid of the two triangles' six corners (length)
+  Vector3 location = Vector3::Zero();     ///< a point of both: the mean of the corners of their intersection (length)
 };
 
 /// What repair_surface changed.

@@ -106,7 +106,8 @@ mesh::TetMesh extract_mesh(const Complex& complex, const std::vector<SolidPart>&
 /// initialisation shoots random rays from the domain's centre and misses small parts (a patella
 /// in a leg). A grid of spacing `spacing` over `bounds` is labelled; every grid edge whose ends
 /// differ is cut by the domain's exact boundary search, and up to `per_interface` of those
-/// points per pair of labels (spread over the grid) are inserted on the surface.
+/// points per pair of labels (spread over the grid, none closer than spacing / 2 to another) are
+/// inserted on the surface.
 void seed_interfaces(Complex& complex, const Domain& domain, const std::function<int(const Kernel::Point_3&)>& label,
                      const Bounds& bounds, double spacing, std::size_t per_interface) {
   const Vector3 extent = bounds.max - bounds.min;
@@ -139,11 +140,18 @@ void seed_interfaces(Complex& complex, const Domain& domain, const std::function
   }
   Triangulation& triangulation = complex.triangulation();
   const auto intersect = domain.construct_intersection_object();
+  // A grid point on an interface is the crossing of all its edges: keep one seed of such a
+  // cluster (nearly coincident seeds make Mesh_3 refine to zero-volume tets around them).
+  std::vector<Vector3> seeded;
+  const double min_gap = 0.5 * spacing;
   for (const auto& [pair, segments] : crossings) {
     const std::size_t stride = std::max<std::size_t>(1, segments.size() / per_interface);
     for (std::size_t s = 0; s < segments.size(); s += stride) {
       const auto hit = intersect(Kernel::Segment_3(cgal::to_point(segments[s].first), cgal::to_point(segments[s].second)));
       if (std::get<2>(hit) == 0) continue;
+      const Vector3 x = cgal::to_vector(std::get<0>(hit));
+      if (std::any_of(seeded.begin(), seeded.end(), [&](const Vector3& y) { return (x - y).norm() < min_gap; })) continue;
+      seeded.push_back(x);
       const auto vertex = triangulation.insert(Triangulation::Weighted_point(std::get<0>(hit)));
       if (vertex == Triangulation::Vertex_handle()) continue;
       complex.set_dimension(vertex, 2);
@@ -241,9 +249,17 @@ mesh::TetMesh tetrahedralize(const std::vector<SolidPart>& parts, const SurfaceL
   Complex complex;
   const double extent = (bounds.max - bounds.min).maxCoeff();
   const double spacing = std::max(0.5 * options.element_size, extent / 160.0);
-  seed_interfaces(complex, domain, label, bounds, spacing, 64);
+  // Over the padded box, so that the grid also has points outside every part and the outer
+  // boundary is seeded (a part that fills its bounds, such as a box, has no other interface).
+  Bounds padded;
+  padded.extend(bounds.min - pad);
+  padded.extend(bounds.max + pad);
+  seed_interfaces(complex, domain, label, padded, spacing, 64);
+  // Without a time limit of their own, perturb and exude stop after as much wall time as the
+  // refinement took: the mesh would depend on the machine's load. 0 = until they are done.
   CGAL::refine_mesh_3(complex, domain, criteria, CGAL::parameters::no_lloyd(), CGAL::parameters::no_odt(),
-                      CGAL::parameters::perturb(), CGAL::parameters::exude());
+                      CGAL::parameters::perturb(CGAL::parameters::time_limit = 0, CGAL::parameters::sliver_bound = 8),
+                      CGAL::parameters::exude(CGAL::parameters::time_limit = 0, CGAL::parameters::sliver_bound = 15));
   mesh::TetMesh result = extract_mesh(complex, parts);
 
   TetrahedralizeReport made;
