@@ -7,11 +7,14 @@
 ///   setup (meshing, depth) / forces and stiffness / collision / linear solve / line search / other.
 ///
 /// Variants by element size: `h16` (4.4k nodes, the main job's default), `h12` and `full` (the
-/// scene as written, 9 mm: 8.9k nodes / 37k tets). Select with --benchmark_filter. Timings are
-/// measured here, never asserted in tests.
+/// scene as written, 9 mm: 8.9k nodes / 37k tets). `BM_VhKneeFlexion/full` runs
+/// examples/vh-knee-flexion.json (the Visible Human surfaces, meshed by sinew, issue 14) as
+/// written; it reports an error when the data is not beside the repository. Select with
+/// --benchmark_filter. Timings are measured here, never asserted in tests.
 
 #include <benchmark/benchmark.h>
 
+#include <filesystem>
 #include <string>
 
 #include "bench_run_support.hpp"
@@ -37,9 +40,28 @@ void BM_KneeFlexion(benchmark::State& state, double element_size) {
   }
 }
 
+void BM_VhKneeFlexion(benchmark::State& state) {
+  scene::SceneConfig config = scene::load_scene_file(std::string(SINEW_SOURCE_DIR) + "/examples/vh-knee-flexion.json");
+  if (!std::filesystem::exists(std::filesystem::path(config.data_directory) / "VH_M_Knee_R.glb")) {
+    state.SkipWithError(("the VH knee data is not in " + config.data_directory).c_str());
+    return;
+  }
+  config.output.vtu = false;
+  for (auto _ : state) {
+    const app::RunReport report = bench::run_once(state, config, "vh-knee");
+    const auto& r = report.result;
+    state.counters["increments"] = r.segments_completed;
+    state.counters["steps"] = r.steps;
+    state.counters["newton_its"] = r.newton_iterations;
+    state.counters["cuts"] = r.cuts;
+    bench::set_phase_counters(state, report, r.times);
+  }
+}
+
 BENCHMARK_CAPTURE(BM_KneeFlexion, h16, 16.0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(BM_KneeFlexion, h12, 12.0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(BM_KneeFlexion, full, 0.0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK(BM_VhKneeFlexion)->Name("BM_VhKneeFlexion/full")->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 
 }  // namespace
 

@@ -2,7 +2,10 @@
 """Renders a knee-flexion run (examples/knee-flexion.json) as PNG.
 
 Usage: /usr/bin/python3 scripts/render_knee.py OUTPUT_DIR [--angles 0 50 100 150] [--flexion 150]
-                                               [--out DIR]
+                                               [--out DIR] [--vh]
+
+--vh: a run of examples/vh-knee-flexion.json (the data's frame: looked at along x, the epicondylar
+axis, +z anterior to the right, +y up; the section is the plane x = -148 mm through the patella).
 
 Writes into DIR (default OUTPUT_DIR):
   knee_side.png      the leg's surface from the side (looking along the flexion axis) at the
@@ -27,6 +30,24 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 REGION_COLOURS = ["#b0b0b0", "#d9d9d9", "#5a8dd6", "#2f5fb3", "#c25cc2", "#5cb85c", "#e6c229", "#f2c9a0"]
+
+
+class Frame:
+    """Which coordinates the pictures show: the side view looks along `depth` (far side first) and
+    plots (`across`, `up`); the section is the plane coordinate[`section_axis`] = `section_at`."""
+
+    def __init__(self, depth, across, up, section_axis, section_at, fold_window, labels):
+        self.depth, self.across, self.up = depth, across, up
+        self.section_axis, self.section_at = section_axis, section_at
+        self.fold_window, self.labels = fold_window, labels
+
+
+# The generated leg: flexion axis y, x anterior, z up; a section just off the symmetry plane,
+# where generated meshes put whole layers of nodes.
+GENERATED = Frame(1, 0, 2, 1, 0.37, (-110, 5, 5, 125), ("x (mm, anterior)", "z (mm)"))
+# The VH knee: flexion axis ~x, z anterior, y up; the section through the patella.
+VH = Frame(0, 2, 1, 0, -148.0, (-140, -10, -490, -350), ("z (mm, anterior)", "y (mm, up)"))
+FRAME = GENERATED
 
 
 def read_series(directory):
@@ -58,8 +79,8 @@ def draw_side(ax, mesh, title):
     region = np.asarray(mesh.cell_data_dict["region"]["tetra"]).reshape(-1).astype(int)
     faces, owner = boundary_faces(tets)
     skin_region = region.max()  # the skin is the last region of the leg
-    depth = p[faces].mean(axis=1)[:, 1]
-    order = np.argsort(-depth)  # far (large y) first
+    depth = p[faces].mean(axis=1)[:, FRAME.depth]
+    order = np.argsort(-depth)  # far (large depth coordinate) first
     faces, owner = faces[order], owner[order]
     light = shade(p, faces)
     colours = []
@@ -68,23 +89,21 @@ def draw_side(ax, mesh, title):
         base = np.array(matplotlib.colors.to_rgb(REGION_COLOURS[r % len(REGION_COLOURS)]))
         alpha = 0.35 if r == skin_region else 1.0
         colours.append((*(base * s), alpha))
-    ax.add_collection(PolyCollection(p[faces][:, :, [0, 2]], facecolors=colours, edgecolors="none"))
-    ax.set_xlim(p[:, 0].min() - 10, p[:, 0].max() + 10)
-    ax.set_ylim(p[:, 2].min() - 10, p[:, 2].max() + 10)
+    ax.add_collection(PolyCollection(p[faces][:, :, [FRAME.across, FRAME.up]], facecolors=colours, edgecolors="none"))
+    ax.set_xlim(p[:, FRAME.across].min() - 10, p[:, FRAME.across].max() + 10)
+    ax.set_ylim(p[:, FRAME.up].min() - 10, p[:, FRAME.up].max() + 10)
     ax.set_aspect("equal")
     ax.set_title(title, fontsize=9)
     ax.axis("off")
 
 
-SECTION_Y = 0.37  # mm: just off the symmetry plane, where generated meshes put whole layers of nodes
-
-
 def section(mesh, field):
-    """Polygons of the tets cut by the plane y = SECTION_Y, with the mean of `field` on each."""
+    """Polygons of the tets cut by the frame's section plane, with the mean of `field` on each."""
     p = mesh.points.copy()
-    p[:, 1] -= SECTION_Y
+    a = FRAME.section_axis
+    p[:, a] -= FRAME.section_at
     tets = mesh.cells_dict["tetra"]
-    y = p[tets][:, :, 1]
+    y = p[tets][:, :, a]
     cut = (y.min(axis=1) < 0) & (y.max(axis=1) > 0)
     polys, values, owners = [], [], []
     f = mesh.point_data[field] if field in mesh.point_data else np.zeros(len(p))
@@ -96,11 +115,11 @@ def section(mesh, field):
         vals = []
         for a in range(4):
             for b in range(a + 1, 4):
-                ya, yb = p[v[a], 1], p[v[b], 1]
+                ya, yb = p[v[a], FRAME.section_axis], p[v[b], FRAME.section_axis]
                 if (ya < 0) != (yb < 0):
                     s = ya / (ya - yb)
                     q = p[v[a]] + s * (p[v[b]] - p[v[a]])
-                    pts.append([q[0], q[2]])
+                    pts.append([q[FRAME.across], q[FRAME.up]])
                     vals.append(f[v[a]] + s * (f[v[b]] - f[v[a]]))
         pts = np.array(pts)
         c = pts.mean(axis=0)
@@ -133,8 +152,8 @@ def draw_section(ax, mesh, field, label, window=None, cmap="turbo_r"):
     ax.set_xlim(window[0], window[1])
     ax.set_ylim(window[2], window[3])
     ax.set_aspect("equal")
-    ax.set_xlabel("x (mm, anterior)")
-    ax.set_ylabel("z (mm)")
+    ax.set_xlabel(FRAME.labels[0])
+    ax.set_ylabel(FRAME.labels[1])
 
 
 def main():
@@ -143,7 +162,10 @@ def main():
     parser.add_argument("--angles", type=float, nargs="*", default=[0, 50, 100, 150])
     parser.add_argument("--flexion", type=float, default=150.0, help="flexion angle at lambda = 1 (degrees)")
     parser.add_argument("--out")
+    parser.add_argument("--vh", action="store_true", help="a run of examples/vh-knee-flexion.json")
     args = parser.parse_args()
+    global FRAME
+    FRAME = VH if args.vh else GENERATED
     directory = pathlib.Path(args.directory)
     out = pathlib.Path(args.out) if args.out else directory
     out.mkdir(parents=True, exist_ok=True)
@@ -166,15 +188,15 @@ def main():
     angle = lambdas[-1] * args.flexion
     fig, ax = plt.subplots(figsize=(7.5, 7))
     draw_section(ax, last, "material_depth", "material depth (mm)")
-    ax.set_title(f"mid-plane section at {angle:.0f}° flexion, coloured by material depth (rigid parts grey)", fontsize=9)
+    ax.set_title(f"section at {angle:.0f}° flexion, coloured by material depth (rigid parts grey)", fontsize=9)
     fig.tight_layout()
     fig.savefig(out / "knee_cutaway.png", dpi=110)
     plt.close(fig)
 
     # Behind the knee: the posterior crease, where the skin-fat of the calf folds onto the thigh's.
     fig, ax = plt.subplots(figsize=(7.5, 6))
-    draw_section(ax, last, "contact_pressure", "contact pressure (kPa)", window=(-110, 5, 5, 125), cmap="viridis")
-    ax.set_title(f"behind the knee at {angle:.0f}° flexion: mid-plane section, contact pressure", fontsize=9)
+    draw_section(ax, last, "contact_pressure", "contact pressure (kPa)", window=FRAME.fold_window, cmap="viridis")
+    ax.set_title(f"behind the knee at {angle:.0f}° flexion: section, contact pressure", fontsize=9)
     fig.tight_layout()
     fig.savefig(out / "knee_fold.png", dpi=110)
     plt.close(fig)

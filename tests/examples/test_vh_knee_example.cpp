@@ -23,6 +23,12 @@ TEST(VhKneeExample, CoarseFlexionKeepsThePatellaInTheGroove) {
     std::printf("[ skipped  ] VH knee: the HRA files are not in %s\n", config.data_directory.c_str());
     GTEST_SKIP() << "VH knee data not found in " << config.data_directory;
   }
+#ifdef SINEW_SANITIZER_BUILD
+  // CGAL's mesher and the 26k-unknown solve run ~10x slower instrumented: the Release suite
+  // covers this run; the sanitizers see the same code on the small scenes of the other suites.
+  std::printf("[ skipped  ] VH knee flexion: not in the sanitizer build (about an hour there)\n");
+  GTEST_SKIP() << "not in the sanitizer build";
+#endif
   ASSERT_EQ(config.bodies.size(), 2u);
   for (auto& body : config.bodies) {
     ASSERT_TRUE(body.mesh.surfaces.has_value());

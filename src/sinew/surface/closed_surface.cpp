@@ -95,9 +95,13 @@ bool ClosedSurface::contains(const Vector3& point) const {
   return (*impl_->side)(cgal::to_point(point)) != CGAL::ON_UNBOUNDED_SIDE;
 }
 
+double ClosedSurface::distance(const Vector3& point) const {
+  return std::sqrt(CGAL::to_double(impl_->tree.squared_distance(cgal::to_point(point))));
+}
+
 double ClosedSurface::signed_distance(const Vector3& point) const {
-  const double distance = std::sqrt(CGAL::to_double(impl_->tree.squared_distance(cgal::to_point(point))));
-  return contains(point) ? -distance : distance;
+  const double unsigned_distance = distance(point);
+  return contains(point) ? -unsigned_distance : unsigned_distance;
 }
 
 double ClosedSurface::volume() const { return impl_->volume; }

@@ -37,6 +37,8 @@ class ClosedSurface {
 
   /// True strictly inside or on the surface.
   bool contains(const Vector3& point) const;
+  /// Distance to the surface (length), >= 0 (no inside test).
+  double distance(const Vector3& point) const;
   /// Distance to the surface (length), negative inside.
   double signed_distance(const Vector3& point) const;
   /// Enclosed volume (length^3), > 0.

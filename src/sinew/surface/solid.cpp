@@ -95,8 +95,9 @@ bool solid_contains(const Solid& solid, const SurfaceLibrary& library, const Vec
       if (solid.distance > 0) {
         for (const std::string& name : solid.surfaces) {
           const Bounds b = find_surface(library, name).bounds();
+          // Near the surface, or inside it (only then is the costlier inside test needed).
           if (((x.array() >= b.min.array() - solid.distance) && (x.array() <= b.max.array() + solid.distance)).all() &&
-              find_surface(library, name).signed_distance(x) <= solid.distance) {
+              (find_surface(library, name).distance(x) <= solid.distance || find_surface(library, name).contains(x))) {
             return true;
           }
         }

@@ -239,7 +239,8 @@ mesh::TetMesh tetrahedralize(const std::vector<SolidPart>& parts, const SurfaceL
     return 0;
   };
   CGAL::Random random(20011);  // fixed: the same scene gives the same mesh
-  const Domain domain(label, box, 1e-7, CGAL::Null_subdomain_index(), &random);
+  // Boundary points are found by bisection to 1e-6 of the box's diagonal (0.5 um on a 0.5 m leg).
+  const Domain domain(label, box, 1e-6, CGAL::Null_subdomain_index(), &random);
   const SizeField size{&options, &library};
   const double facet_distance = options.facet_distance > 0 ? options.facet_distance : options.element_size / 20.0;
   const Criteria criteria(CGAL::parameters::facet_angle = 25, CGAL::parameters::facet_size = size,
