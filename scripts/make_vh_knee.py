@@ -102,6 +102,11 @@ def scene(element_size, increments, angle_deg=150.0):
     t1, t2, t3 = [-134.0, -320.0, 27.0], [-131.0, -300.0, 28.0], [-130.0, -280.0, 29.0]
     fiber_up = [0.0, 1.0, 0.0]
     ligament_dir = [PATELLA_APEX[i] - TUBEROSITY[i] for i in range(3)]
+    # Lines of action (per-element fiber fields): the quadriceps from the patella's base up the
+    # front of the femur; the leg's muscles along the shank's and the thigh's axes (the centres of
+    # the skin's sections at the cuts and at the joint line).
+    quadriceps_path = [base, t1, t2, t3, [-126.0, JOINT_Y + CROP, 30.0]]
+    leg_axis_path = [[-190.0, JOINT_Y - CROP, -70.0], [-150.0, JOINT_Y, -17.0], [-140.0, JOINT_Y + CROP, 0.0]]
     leg_parts = [
         {"region": "tibia", "solid": {"intersection": [
             {"union": [surface("tibia"), surface("fibula")]},
@@ -151,10 +156,10 @@ def scene(element_size, increments, angle_deg=150.0):
                            "contact_penalty_scale": STIFF_SCALE},
                  "patella": {"rigid": "free", "contact_penalty_scale": STIFF_SCALE},
                  "ligament": {"material": "tendon", "fiber_direction": ligament_dir, "contact_penalty_scale": STIFF_SCALE},
-                 "tendon": {"material": "tendon", "contact_penalty_scale": STIFF_SCALE},
-                 "graded_2": {"material": "graded_2"},
-                 "graded_1": {"material": "graded_1"},
-                 "muscle": {"material": "muscle"},
+                 "tendon": {"material": "tendon", "fiber_path": quadriceps_path, "contact_penalty_scale": STIFF_SCALE},
+                 "graded_2": {"material": "graded_2", "fiber_path": quadriceps_path},
+                 "graded_1": {"material": "graded_1", "fiber_path": quadriceps_path},
+                 "muscle": {"material": "muscle", "fiber_path": leg_axis_path},
                  "skin": {"material": "skin"}}},
         ],
         "boundary_conditions": [

@@ -46,7 +46,7 @@ class Frame:
 # where generated meshes put whole layers of nodes.
 GENERATED = Frame(1, 0, 2, 1, 0.37, (-110, 5, 5, 125), ("x (mm, anterior)", "z (mm)"))
 # The VH knee: flexion axis ~x, z anterior, y up; the section through the patella.
-VH = Frame(0, 2, 1, 0, -148.0, (-140, -10, -490, -350), ("z (mm, anterior)", "y (mm, up)"))
+VH = Frame(0, 2, 1, 0, -148.0, (-200, -40, -470, -330), ("z (mm, anterior)", "y (mm, up)"))
 FRAME = GENERATED
 
 

@@ -5,6 +5,7 @@
 /// Built by the scene module; consumed by the energies and the solver. It owns nothing that
 /// changes during a solve (state lives in solver::State).
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,9 @@ struct Problem {
   std::vector<BodyRange> bodies;
   /// Per region: the law (nullptr for rigid regions, which carry no elastic energy).
   std::vector<material::MaterialPtr> region_material;
+  /// Tets whose law differs from their region's (a per-element fiber field: RegionConfig's
+  /// fiber_path), by global tet index.
+  std::map<Index, material::MaterialPtr> element_material;
   /// Per region: mass density (mass per rest volume), 0 allowed.
   std::vector<double> region_density;
 

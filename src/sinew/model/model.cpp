@@ -146,6 +146,7 @@ Model build_model(const scene::SceneConfig& scene) {
   const auto& mesh = problem.mesh;
   model.tet_material.resize(static_cast<std::size_t>(mesh.num_tets()));
   for (Index t = 0; t < mesh.num_tets(); ++t) model.tet_material[t] = problem.region_material[mesh.region[t]];
+  for (const auto& [t, law] : problem.element_material) model.tet_material[static_cast<std::size_t>(t)] = law;
   model.dofs = std::make_unique<fem::DofMap>(problem);
   model.elastic = std::make_unique<fem::ElasticEnergy>(
       mesh.rest, mesh.tets, model.tet_material,

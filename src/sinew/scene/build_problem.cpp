@@ -164,6 +164,39 @@ class ProblemBuilder {
     return body;
   }
 
+  /// A per-element fiber field: every tet of the region gets its own law, the region's material
+  /// with the fiber along the fiber_path segment nearest the tet's rest centroid.
+  void orient_along_path(const RegionConfig& region, const std::string& path, const std::vector<Index>& tets) {
+    const auto spec = scene_.materials.find(region.material);
+    if (spec == scene_.materials.end() || !spec->second.fiber) return;  // reported by region_material
+    const std::vector<Vector3>& points = region.fiber_path;
+    std::map<std::size_t, material::MaterialPtr> law_of_segment;  // one law per segment, shared
+    for (const Index t : tets) {
+      Vector3 centroid = Vector3::Zero();
+      for (int k = 0; k < 4; ++k) centroid += problem_.mesh.rest.row(problem_.mesh.tets(t, k)).transpose() / 4.0;
+      std::size_t nearest = 0;
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+        const Vector3 segment = points[i + 1] - points[i];
+        const double s = std::clamp((centroid - points[i]).dot(segment) / segment.squaredNorm(), 0.0, 1.0);
+        const double distance = (centroid - points[i] - s * segment).norm();
+        if (distance < best) best = distance, nearest = i;
+      }
+      material::MaterialPtr& law = law_of_segment[nearest];
+      if (!law) {
+        material::MaterialSpec oriented = spec->second;
+        oriented.fiber->direction = (points[nearest + 1] - points[nearest]).normalized();
+        try {
+          law = material::make_material(oriented);
+        } catch (const InputError& e) {
+          error(json_path_key(path, "fiber_path"), e.what());
+          return;
+        }
+      }
+      problem_.element_material[t] = law;
+    }
+  }
+
   material::MaterialPtr region_material(const RegionConfig& region, const std::string& path) {
     const auto spec = scene_.materials.find(region.material);
     if (spec == scene_.materials.end()) {
@@ -258,6 +291,7 @@ class ProblemBuilder {
         error(path, "needs \"material\" (deformable) or \"rigid\"");
       } else {
         problem_.region_material.push_back(region_material(*region, path));
+        if (!region->fiber_path.empty()) orient_along_path(*region, path, tets_of_region[r]);
       }
     }
     problem_.bodies.push_back(std::move(range));

@@ -210,6 +210,15 @@ class SceneReader {
     region.density = j.at("density").get<double>();
     region.contact_penalty_scale = j.at("contact_penalty_scale").get<double>();
     if (j.contains("fiber_direction")) region.fiber_direction = to_vector3(j.at("fiber_direction"));
+    if (j.contains("fiber_path")) {
+      for (const json& point : j.at("fiber_path")) region.fiber_path.push_back(to_vector3(point));
+      if (region.fiber_direction) error(json_path_key(path, "fiber_path"), "give fiber_direction or fiber_path, not both");
+      for (std::size_t i = 1; i < region.fiber_path.size(); ++i) {
+        if ((region.fiber_path[i] - region.fiber_path[i - 1]).norm() == 0) {
+          error(json_path_index(json_path_key(path, "fiber_path"), i), "repeats the point before it (a segment needs a direction)");
+        }
+      }
+    }
     const bool has_material = j.contains("material");
     const bool has_rigid = j.contains("rigid");
     if (has_material == has_rigid) {
@@ -224,8 +233,8 @@ class SceneReader {
         for (const auto& entry : config.materials) known.push_back(entry.first);
         error(json_path_key(path, "material"), "unknown material " + json(region.material).dump() +
                                                    unknown_name_hint(region.material, known, "materials"));
-      } else if (region.fiber_direction && !material->second.fiber) {
-        error(json_path_key(path, "fiber_direction"),
+      } else if ((region.fiber_direction || !region.fiber_path.empty()) && !material->second.fiber) {
+        error(json_path_key(path, region.fiber_direction ? "fiber_direction" : "fiber_path"),
               "material " + json(region.material).dump() + " has no \"fiber\" to orient");
       }
     }
@@ -254,6 +263,7 @@ class SceneReader {
       if (region.fiber_direction) {
         error(json_path_key(path, "fiber_direction"), "a rigid region has no fibers");
       }
+      if (!region.fiber_path.empty()) error(json_path_key(path, "fiber_path"), "a rigid region has no fibers");
     }
     return region;
   }

@@ -55,6 +55,9 @@ struct RegionConfig {
   fem::RigidMotion rigid_motion;          ///< when rigid_kind == Prescribed
   double density = 0;                      ///< mass per volume
   std::optional<Vector3> fiber_direction;  ///< overrides the material's fiber direction
+  /// Fibers along a polyline (>= 2 points, length): each tet's fiber direction is that of the
+  /// path segment nearest its rest centroid, a per-element field. Empty = none.
+  std::vector<Vector3> fiber_path;
   /// Factor on the contact penalty of this region's surface and tets; a pair of parts uses the
   /// smaller of their two factors (see contact::ContactGeometry).
   double contact_penalty_scale = 1;

@@ -166,6 +166,12 @@ SchemaNode body_schema() {
                              .min(0)
                              .fallback(region_defaults.density),
                          vec3("fiber_direction", "overrides the material's fiber direction in this region").nonzero().within(kMaxLength),
+                         array("fiber_path",
+                               "fibers along a polyline instead (points, length): each element's fiber direction is "
+                               "that of the path segment nearest its centroid, a per-element field that follows a "
+                               "muscle's curved line of action",
+                               vec3("", "a point of the path (length)").within(kMaxLength))
+                             .items(2),
                          number("contact_penalty_scale",
                                 "factor on the contact penalty where this region's surface or tets take part; two "
                                 "parts in contact use the smaller of their factors, so stiff parts (e.g. two rigid "
