@@ -224,10 +224,10 @@ int side_of(const FaceFrames& frames, int f, const Vector3& direction) {
 
 /// The half-open rule for a point on face f's plane (docs/contact.md): it belongs to the tet when
 /// it moves into the tet under the perturbation x + δ d0 + δ² d1 + δ³ d2 + δ⁴ d3 (δ -> 0+), d0 the
-/// inward normal of the triangle (`inward`, pointing into the triangle's own body) and d1..d3
-/// kTieBreakDirections. The first direction not in the plane decides.
-bool on_face_counts(const FaceFrames& frames, int f, const Vector3& inward) {
-  if (const int s = side_of(frames, f, inward); s != 0) return s > 0;
+/// outward normal of the triangle (`outward`, pointing away from the triangle's own body) and
+/// d1..d3 tie_break_directions(). The first direction not in the plane decides.
+bool on_face_counts(const FaceFrames& frames, int f, const Vector3& outward) {
+  if (const int s = side_of(frames, f, outward); s != 0) return s > 0;
   for (const Vector3& d : tie_break_directions()) {
     if (const int s = side_of(frames, f, d); s != 0) return s > 0;
   }
@@ -266,8 +266,9 @@ ClipPolygon clip_triangle_tet(const Matrix3& triangle, const TetMatrix& tet) {
     // Early exit: the triangle lies strictly outside one face plane.
     if (d(0, f) < 0.0 && d(1, f) < 0.0 && d(2, f) < 0.0) return result;
     // The triangle lies in the face plane: the half-open rule gives it to the tet on the side of
-    // its inward normal only (a shared face counts once; a touching boundary face not at all).
-    if (d(0, f) == 0.0 && d(1, f) == 0.0 && d(2, f) == 0.0 && !on_face_counts(frames, f, -plane_normal))
+    // its outward normal only (a shared face counts once; a boundary face it touches from outside
+    // counts, with the depth of that face).
+    if (d(0, f) == 0.0 && d(1, f) == 0.0 && d(2, f) == 0.0 && !on_face_counts(frames, f, plane_normal))
       return result;
   }
 
@@ -360,8 +361,8 @@ CollocationPoints triangle_vertices_in_tet(const Matrix3& triangle, const TetMat
   CollocationPoints points;
   const FaceFrames frames = face_frames(tet);
   if (!usable_tet(frames)) return points;
-  const Vector3 inward =
-      -(triangle.row(1) - triangle.row(0)).cross(triangle.row(2) - triangle.row(0)).transpose();
+  const Vector3 outward =
+      (triangle.row(1) - triangle.row(0)).cross(triangle.row(2) - triangle.row(0)).transpose();
   for (int i = 0; i < 3; ++i) {
     const Vector3 x = triangle.row(i).transpose();
     const Eigen::Vector4d snapped = snapped_barycentric(frames, x);
@@ -369,7 +370,7 @@ CollocationPoints triangle_vertices_in_tet(const Matrix3& triangle, const TetMat
     for (int a = 0; a < 4 && inside; ++a) {
       inside = std::isfinite(snapped[a]) && snapped[a] >= 0.0;
       // On a face plane: the half-open rule decides (one tet of a conforming mesh gets the point).
-      if (inside && snapped[a] == 0.0) inside = on_face_counts(frames, a, inward);
+      if (inside && snapped[a] == 0.0) inside = on_face_counts(frames, a, outward);
     }
     if (!inside) continue;
     const Eigen::Vector4d xi = barycentric_with(frames, x);

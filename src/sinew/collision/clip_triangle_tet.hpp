@@ -14,13 +14,14 @@
 /// which points lie on it, and on which side the others lie.
 ///
 /// Half-open rule (docs/contact.md): a triangle lying in the plane of face f belongs to the tet
-/// only if the tet is on the side of the triangle's inward normal (the side of the triangle's own
+/// only if the tet is on the side of the triangle's outward normal (away from the triangle's own
 /// body, for an outward-oriented surface); it is then clipped by the other faces only. Of two tets
-/// sharing that face exactly one takes it, and a triangle resting on a boundary face of another
-/// body (touching, zero gap) belongs to no tet. A collocation point on a face plane belongs to the
-/// tet if the perturbation x + δ n_in + δ² d1 + δ³ d2 + δ⁴ d3 (δ -> 0+) moves it into the tet,
-/// n_in the triangle's inward normal and d1..d3 tie_break_directions(): in a conforming mesh
-/// exactly one of the tets around a shared face, edge or node gets it. Other points on face
+/// sharing that face exactly one takes it; a triangle resting on a boundary face of another body
+/// (touching, zero gap) belongs to that body's tet, and one lying beside another body's face in
+/// the same plane, both bodies on the same side (a common cut plane), to none. A collocation
+/// point on a face plane belongs to the tet if the perturbation x + δ n + δ² d1 + δ³ d2 + δ⁴ d3
+/// (δ -> 0+) moves it into the tet, n the triangle's outward normal and d1..d3
+/// tie_break_directions(): in a conforming mesh exactly one of the tets around a shared face, edge or node gets it. Other points on face
 /// planes only bound the clip polygon and make no difference to its area.
 /// Lengths are in the caller's unit; barycentric coordinates are dimensionless.
 
@@ -70,7 +71,7 @@ struct ClipPolygon {
 };
 
 /// The fixed directions d1, d2, d3 (spanning space) of the half-open rule, after the triangle's
-/// inward normal: (1, √2, √3), then x, then y.
+/// outward normal: (1, √2, √3), then x, then y.
 const std::array<Vector3, 3>& tie_break_directions();
 
 /// Clips `triangle` (3x3, one vertex per row) by the tet `tet` (4x3, one vertex per row,
