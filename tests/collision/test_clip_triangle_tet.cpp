@@ -230,32 +230,35 @@ TEST(ClipTriangleTet, AdversarialConfigurations) {
     const char* name;
     Matrix3 tri;
     double expected_area;  // < 0: not checked
+    bool in_face_plane;     // the triangle lies in a face plane, oriented so that it counts
   };
   std::vector<Case> cases;
-  auto add = [&](const char* name, std::initializer_list<double> v, double expected) {
+  auto add = [&](const char* name, std::initializer_list<double> v, double expected, bool in_face_plane = false) {
     Matrix3 m;
     auto it = v.begin();
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) m(i, j) = *it++;
-    cases.push_back({name, m, expected});
+    cases.push_back({name, m, expected, in_face_plane});
   };
-  add("equals face z=0", {0, 0, 0, 1, 0, 0, 0, 1, 0}, 0.5);
-  add("in face plane, larger", {-1, -1, 0, 3, -1, 0, -1, 3, 0}, 0.5);
-  add("in face plane, partly", {0.2, 0.2, 0, 2, 0.2, 0, 0.2, 2, 0}, 0.5 * 0.6 * 0.6);
-  add("in slanted face plane", {1, 0, 0, 0, 1, 0, 0, 0, 1}, std::sqrt(3.0) / 2);
+  // Triangles in a face plane are given with their outward normal (away from their own body)
+  // pointing into the tet: the half-open rule gives them to the tet, clipped by the other faces.
+  add("equals face z=0", {0, 0, 0, 1, 0, 0, 0, 1, 0}, 0.5, true);
+  add("in face plane, larger", {-1, -1, 0, 3, -1, 0, -1, 3, 0}, 0.5, true);
+  add("in face plane, partly", {0.2, 0.2, 0, 2, 0.2, 0, 0.2, 2, 0}, 0.5 * 0.6 * 0.6, true);
+  add("in slanted face plane", {1, 0, 0, 0, 0, 1, 0, 1, 0}, std::sqrt(3.0) / 2, true);
   add("vertex exactly on a face", {0.2, 0.2, 0, 0.2, 0.2, 0.5, 0.5, 0.2, 0.3}, -1);
   add("vertex on a tet vertex", {0, 0, 1, 0.3, 0.3, 0.3, -0.2, 0.5, 0.3}, -1);
   add("edge along a tet edge", {0, 0, 0, 1, 0, 0, 0.3, -0.5, 0.5}, -1);
-  add("edge along a tet edge, in face", {0, 0, 0, 1, 0, 0, 0.3, 0.0, 0.5}, 0.25);
+  add("edge along a tet edge, in face", {0, 0, 0, 0.3, 0.0, 0.5, 1, 0, 0}, 0.25, true);
   add("edge longer than tet edge", {-1, 0, 0, 2, 0, 0, 0.3, 0.3, 0.3}, -1);
   add("zero area, collinear", {0.1, 0.1, 0.1, 0.2, 0.2, 0.2, 0.3, 0.3, 0.3}, 0);
   add("zero area, one point", {0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1}, 0);
   add("zero area, crossing", {-1, 0.2, 0.2, 2, 0.2, 0.2, 0.5, 0.2, 0.2}, 0);
   add("tet vertex on triangle", {-1, -1, 1, 2, -1, 1, -1, 2, 1}, 0);
   add("tet vertex inside triangle, tilted", {-1, -1, 0.9, 2, -1, 1.05, -1, 2, 1.05}, -1);
-  add("through three tet vertices", {1, 0, 0, 0, 1, 0, 0, 0, 1}, std::sqrt(3.0) / 2);
-  add("through two tet vertices", {1, 0, 0, 0, 0, 1, 0.2, 0.6, 0.2}, -1);
-  add("nearly coplanar with face", {-1, -1, 1e-17, 3, -1, -1e-17, -1, 3, 2e-17}, 0.5);
+  add("through three tet vertices", {1, 0, 0, 0, 0, 1, 0, 1, 0}, std::sqrt(3.0) / 2, true);
+  add("through two tet vertices, in slanted face", {1, 0, 0, 0, 0, 1, 0.2, 0.6, 0.2}, 0.3 * std::sqrt(3.0), true);
+  add("nearly coplanar with face", {-1, -1, 1e-17, 3, -1, -1e-17, -1, 3, 2e-17}, 0.5, true);
   add("nearly coplanar, just outside", {-1, -1, -1e-9, 3, -1, -1e-9, -1, 3, -1e-9}, 0);
   add("tiny triangle at a vertex", {0, 0, 1, 1e-12, 0, 1, 0, 1e-12, 1}, -1);
   add("touching along an edge only", {0, 0, 0, 1, 0, 0, 0.5, -1, -0.5}, 0);
@@ -268,12 +271,14 @@ TEST(ClipTriangleTet, AdversarialConfigurations) {
     if (c.expected_area >= 0) {
       EXPECT_NEAR(polygon_area(p), c.expected_area, 1e-14);
     }
-    // Both triangle orientations, all tet vertex orders: same area.
+    // Both triangle orientations give the same area, except in a face plane, where the other
+    // orientation's outward normal points away from the tet (nothing); all tet vertex orders
+    // give the same area.
     Matrix3 flipped = c.tri;
     flipped.row(1).swap(flipped.row(2));
     const ClipPolygon pf = clip_triangle_tet(flipped, tet);
     expect_sane(pf, flipped, tet, 1e-12);
-    EXPECT_NEAR(polygon_area(pf), polygon_area(p), 1e-14);
+    EXPECT_NEAR(polygon_area(pf), c.in_face_plane ? 0.0 : polygon_area(p), 1e-14);
     std::array<int, 4> perm{0, 1, 2, 3};
     do {
       TetMatrix permuted;
@@ -381,13 +386,21 @@ TEST(ClipTriangleTet, AreaIsContinuousAlongSweeps) {
 TEST(ClipTriangleTet, CollocationPointsAreTheVerticesInTheClosedTet) {
   const TetMatrix tet = unit_tet();
   Matrix3 tri;
-  tri << 0.1, 0.2, 0.3, 2, 0, 0, 0.5, 0.5, 0.0;  // inside, outside, on the face z = 0
+  tri << 0.1, 0.2, 0.3, 0.25, 0.25, 0.0, 2, 0, 0;  // inside, on the face z = 0, outside
+  // The triangle's outward normal for this order is -(0.075, 0.525, 0.125): it points down, out
+  // of the tet, at the vertex on the face z = 0, and the half-open rule does not count it.
   const CollocationPoints c = triangle_vertices_in_tet(tri, tet);
-  ASSERT_EQ(c.count, 2);
+  ASSERT_EQ(c.count, 1);
   EXPECT_EQ(c.vertex[0], 0);
-  EXPECT_EQ(c.vertex[1], 2);
   EXPECT_LT((c.barycentric[0] - Eigen::Vector4d(0.4, 0.1, 0.2, 0.3)).norm(), 1e-15);
-  EXPECT_LT((c.barycentric[1] - Eigen::Vector4d(0.0, 0.5, 0.5, 0.0)).norm(), 1e-15);
+  // The other orientation's outward normal points up, into the tet: both vertices count.
+  Matrix3 flipped = tri;
+  flipped.row(1).swap(flipped.row(2));
+  const CollocationPoints cf = triangle_vertices_in_tet(flipped, tet);
+  ASSERT_EQ(cf.count, 2);
+  EXPECT_EQ(cf.vertex[0], 0);
+  EXPECT_EQ(cf.vertex[1], 2);
+  EXPECT_LT((cf.barycentric[1] - Eigen::Vector4d(0.5, 0.25, 0.25, 0.0)).norm(), 1e-15);
 
   std::mt19937 rng(5);
   for (int trial = 0; trial < 100; ++trial) {

@@ -145,6 +145,47 @@ TEST(BuildContact, DepthFromChosenFacesOnly) {
     EXPECT_NEAR(setup.geometry.depth[v], problem.mesh.rest(v, 2), 1e-12) << "node " << v;
 }
 
+TEST(BuildContact, ExcludedFacesAreNeitherContactSurfaceNorZeroDepthSurface) {
+  // The box's top z = 0.5 as a cut face: its triangles leave the contact surface, and depth is
+  // measured from the other five sides (at the top, the distance to the sides and the bottom).
+  json scene = contact_scene();
+  scene["bodies"][0]["contact"] =
+      json::parse(R"({"exclude_faces": [{"plane": {"point": [0, 0, 0.5], "normal": [0, 0, 1], "tolerance": 1e-9}}]})");
+  const ContactSetup setup = build(scene);
+  const ContactSetup full = build(contact_scene());
+  const SceneConfig config = parse_scene(scene, "");
+  const fem::Problem problem = build_problem(config);
+  const auto& box = problem.bodies[0];
+  const auto& g = setup.geometry;
+  Index box_triangles = 0, full_box_triangles = 0, top_triangles = 0;
+  for (Index f = 0; f < full.geometry.surface.rows(); ++f) {
+    if (full.geometry.surface_body[f] != 0) continue;
+    ++full_box_triangles;
+    bool top = true;
+    for (int k = 0; k < 3; ++k) top = top && std::abs(problem.mesh.rest(full.geometry.surface(f, k), 2) - 0.5) < 1e-12;
+    if (top) ++top_triangles;
+  }
+  for (Index f = 0; f < g.surface.rows(); ++f) {
+    if (g.surface_body[f] != 0) continue;
+    ++box_triangles;
+    bool top = true;
+    for (int k = 0; k < 3; ++k) top = top && std::abs(problem.mesh.rest(g.surface(f, k), 2) - 0.5) < 1e-12;
+    EXPECT_FALSE(top) << "triangle " << f << " lies on the excluded face";
+  }
+  EXPECT_GT(top_triangles, 0);
+  EXPECT_EQ(box_triangles, full_box_triangles - top_triangles);
+  for (Index v = box.first_node; v < box.first_node + box.num_nodes; ++v) {
+    const Vector3 X = problem.mesh.rest.row(v);
+    const double exact = std::min({X.x(), 1 - X.x(), X.y(), 1 - X.y(), X.z()});
+    EXPECT_NEAR(g.depth[v], exact, 1e-12) << "node " << v;
+  }
+  // The tets are all still there (they can be penetrated).
+  EXPECT_EQ(g.tets.rows(), full.geometry.tets.rows());
+  // Excluding every face is an error with its path.
+  scene["bodies"][0]["contact"] = json::parse(R"({"exclude_faces": [{"all": true}]})");
+  EXPECT_THAT(build_contact_error(scene), HasSubstr("bodies[0].contact.exclude_faces: excludes every boundary face"));
+}
+
 TEST(BuildContact, DepthFromAFile) {
   json scene = contact_scene();
   const SceneConfig config = parse_scene(scene, "");

@@ -147,23 +147,39 @@ Eigen::Vector4d clamp_barycentric(Eigen::Vector4d xi) {
   return xi;
 }
 
-/// Per-face data of the barycentric map xi_f(x) = n_f.(x - p_f) / D_f.
+/// Per-face data of the barycentric map xi_f(x) = n_f.(x - p_f) / D_f. The normal n_f and the
+/// point p_f are computed from the face's three vertices sorted lexicographically by position, so
+/// two tets sharing a face compute bitwise the same plane (only the sign of D_f differs): the
+/// numerator n_f.(x - p_f), and with it the classification of x as inside, outside or on the
+/// face, is the same for both, and a point on the face is given to exactly one of them.
 struct FaceFrames {
   std::array<Vector3, 4> normal;
   std::array<Vector3, 4> point;
   std::array<double, 4> denominator{};
+  /// |n_f.(x - p_f)| <= tolerance[f] (L³) puts x on the plane: kClipSnap times |n_f|_1 times the
+  /// face's longest edge (about kClipSnap x height x |D_f| / height), from the face alone.
+  std::array<double, 4> tolerance{};
 };
+
+bool lexicographically_less(const Vector3& a, const Vector3& b) {
+  if (a.x() != b.x()) return a.x() < b.x();
+  if (a.y() != b.y()) return a.y() < b.y();
+  return a.z() < b.z();
+}
 
 FaceFrames face_frames(const TetMatrix& tet) {
   FaceFrames frames;
   for (int f = 0; f < 4; ++f) {
-    const Vector3 p = tet.row(kFace[f][0]).transpose();
-    const Vector3 e1 = tet.row(kFace[f][1]).transpose() - p;
-    const Vector3 e2 = tet.row(kFace[f][2]).transpose() - p;
+    std::array<Vector3, 3> v{tet.row(kFace[f][0]).transpose(), tet.row(kFace[f][1]).transpose(),
+                             tet.row(kFace[f][2]).transpose()};
+    std::sort(v.begin(), v.end(), lexicographically_less);
+    const Vector3 e1 = v[1] - v[0], e2 = v[2] - v[0], e3 = v[2] - v[1];
     const auto fs = static_cast<std::size_t>(f);
     frames.normal[fs] = e1.cross(e2);
-    frames.point[fs] = p;
-    frames.denominator[fs] = frames.normal[fs].dot(tet.row(f).transpose() - p);
+    frames.point[fs] = v[0];
+    frames.denominator[fs] = frames.normal[fs].dot(tet.row(f).transpose() - v[0]);
+    const double edge = std::max({e1.cwiseAbs().maxCoeff(), e2.cwiseAbs().maxCoeff(), e3.cwiseAbs().maxCoeff()});
+    frames.tolerance[fs] = kClipSnap * frames.normal[fs].cwiseAbs().sum() * edge;
   }
   return frames;
 }
@@ -184,7 +200,47 @@ bool usable_tet(const FaceFrames& frames) {
   return true;
 }
 
+/// Barycentric coordinates of x with the ones of points on a face plane (within the face's
+/// tolerance) set to exactly 0.
+Eigen::Vector4d snapped_barycentric(const FaceFrames& frames, const Vector3& x) {
+  Eigen::Vector4d xi;
+  for (std::size_t f = 0; f < 4; ++f) {
+    const double numerator = frames.normal[f].dot(x - frames.point[f]);
+    xi[static_cast<Eigen::Index>(f)] =
+        std::abs(numerator) <= frames.tolerance[f] ? 0.0 : numerator / frames.denominator[f];
+  }
+  return xi;
+}
+
+/// +1 when moving a point on face f's plane along `direction` enters the tet's side of the plane,
+/// -1 when it leaves it, 0 when `direction` lies in the plane (to round-off: the same value for
+/// both tets sharing the face, with opposite signs).
+int side_of(const FaceFrames& frames, int f, const Vector3& direction) {
+  const auto fs = static_cast<std::size_t>(f);
+  const double along = frames.normal[fs].dot(direction);
+  if (along == 0.0) return 0;
+  return (along > 0.0) == (frames.denominator[fs] > 0.0) ? 1 : -1;
+}
+
+/// The half-open rule for a point on face f's plane (docs/contact.md): it belongs to the tet when
+/// it moves into the tet under the perturbation x + δ d0 + δ² d1 + δ³ d2 + δ⁴ d3 (δ -> 0+), d0 the
+/// outward normal of the triangle (`outward`, pointing away from the triangle's own body) and
+/// d1..d3 tie_break_directions(). The first direction not in the plane decides.
+bool on_face_counts(const FaceFrames& frames, int f, const Vector3& outward) {
+  if (const int s = side_of(frames, f, outward); s != 0) return s > 0;
+  for (const Vector3& d : tie_break_directions()) {
+    if (const int s = side_of(frames, f, d); s != 0) return s > 0;
+  }
+  return false;  // unreachable: the tie-break directions span space
+}
+
 }  // namespace
+
+const std::array<Vector3, 3>& tie_break_directions() {
+  static const std::array<Vector3, 3> directions{Vector3(1.0, std::sqrt(2.0), std::sqrt(3.0)), Vector3::UnitX(),
+                                                 Vector3::UnitY()};
+  return directions;
+}
 
 Eigen::Vector4d tet_barycentric(const Vector3& x, const TetMatrix& tet) {
   return barycentric_with(face_frames(tet), x);
@@ -198,15 +254,22 @@ ClipPolygon clip_triangle_tet(const Matrix3& triangle, const TetMatrix& tet) {
   // Snapped barycentric coordinates of the triangle vertices, one row per vertex.
   Eigen::Matrix<double, 3, 4> d;
   for (int i = 0; i < 3; ++i) {
-    const Eigen::Vector4d xi = barycentric_with(frames, triangle.row(i).transpose());
+    const Eigen::Vector4d xi = snapped_barycentric(frames, triangle.row(i).transpose());
     for (int a = 0; a < 4; ++a) {
       if (!std::isfinite(xi[a])) return result;
-      d(i, a) = snap(xi[a]);
+      d(i, a) = xi[a];
     }
   }
-  // Early exit: the triangle lies strictly outside one face plane.
+  const Vector3 plane_normal =
+      (triangle.row(1) - triangle.row(0)).cross(triangle.row(2) - triangle.row(0)).transpose();
   for (int f = 0; f < 4; ++f) {
+    // Early exit: the triangle lies strictly outside one face plane.
     if (d(0, f) < 0.0 && d(1, f) < 0.0 && d(2, f) < 0.0) return result;
+    // The triangle lies in the face plane: the half-open rule gives it to the tet on the side of
+    // its outward normal only (a shared face counts once; a boundary face it touches from outside
+    // counts, with the depth of that face).
+    if (d(0, f) == 0.0 && d(1, f) == 0.0 && d(2, f) == 0.0 && !on_face_counts(frames, f, plane_normal))
+      return result;
   }
 
   WorkPolygon a, b;
@@ -239,8 +302,6 @@ ClipPolygon clip_triangle_tet(const Matrix3& triangle, const TetMatrix& tet) {
   for (int i = 0; i < 3; ++i) scale = std::max(scale, triangle.row(i).cwiseAbs().maxCoeff());
   for (int i = 0; i < 4; ++i) scale = std::max(scale, tet.row(i).cwiseAbs().maxCoeff());
   const double tolerance = 1e-9 * std::max(scale, std::numeric_limits<double>::min());
-  const Vector3 plane_normal =
-      (triangle.row(1) - triangle.row(0)).cross(triangle.row(2) - triangle.row(0)).transpose();
 
   const int n = cur->n;
   result.count = n;
@@ -300,11 +361,19 @@ CollocationPoints triangle_vertices_in_tet(const Matrix3& triangle, const TetMat
   CollocationPoints points;
   const FaceFrames frames = face_frames(tet);
   if (!usable_tet(frames)) return points;
+  const Vector3 outward =
+      (triangle.row(1) - triangle.row(0)).cross(triangle.row(2) - triangle.row(0)).transpose();
   for (int i = 0; i < 3; ++i) {
-    const Eigen::Vector4d xi = barycentric_with(frames, triangle.row(i).transpose());
+    const Vector3 x = triangle.row(i).transpose();
+    const Eigen::Vector4d snapped = snapped_barycentric(frames, x);
     bool inside = true;
-    for (int a = 0; a < 4; ++a) inside = inside && std::isfinite(xi[a]) && snap(xi[a]) >= 0.0;
+    for (int a = 0; a < 4 && inside; ++a) {
+      inside = std::isfinite(snapped[a]) && snapped[a] >= 0.0;
+      // On a face plane: the half-open rule decides (one tet of a conforming mesh gets the point).
+      if (inside && snapped[a] == 0.0) inside = on_face_counts(frames, a, outward);
+    }
     if (!inside) continue;
+    const Eigen::Vector4d xi = barycentric_with(frames, x);
     const auto k = static_cast<std::size_t>(points.count++);
     points.vertex[k] = static_cast<std::int8_t>(i);
     points.barycentric[k] = clamp_barycentric(xi);

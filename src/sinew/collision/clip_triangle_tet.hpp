@@ -8,9 +8,21 @@
 /// barycentric coordinates in the tet. Fixed capacity, no heap.
 ///
 /// Conventions: tet face f is the face opposite tet vertex f, i.e. the plane xi_f = 0, and its
-/// inside half-space is xi_f >= 0 (xi = barycentric coordinates in the tet). Points exactly on
-/// a plane count as inside (the tet is closed); barycentric values within kClipSnap of 0 are
-/// treated as exactly 0, so a triangle lying in a face plane is clipped by the other faces only.
+/// inside half-space is xi_f >= 0 (xi = barycentric coordinates in the tet). Points within about
+/// kClipSnap (relative) of a face plane are treated as exactly on it; the face's plane is computed
+/// from its vertices in a fixed (lexicographic) order, so two tets sharing a face agree bitwise on
+/// which points lie on it, and on which side the others lie.
+///
+/// Half-open rule (docs/contact.md): a triangle lying in the plane of face f belongs to the tet
+/// only if the tet is on the side of the triangle's outward normal (away from the triangle's own
+/// body, for an outward-oriented surface); it is then clipped by the other faces only. Of two tets
+/// sharing that face exactly one takes it; a triangle resting on a boundary face of another body
+/// (touching, zero gap) belongs to that body's tet, and one lying beside another body's face in
+/// the same plane, both bodies on the same side (a common cut plane), to none. A collocation
+/// point on a face plane belongs to the tet if the perturbation x + δ n + δ² d1 + δ³ d2 + δ⁴ d3
+/// (δ -> 0+) moves it into the tet, n the triangle's outward normal and d1..d3
+/// tie_break_directions(): in a conforming mesh exactly one of the tets around a shared face, edge or node gets it. Other points on face
+/// planes only bound the clip polygon and make no difference to its area.
 /// Lengths are in the caller's unit; barycentric coordinates are dimensionless.
 
 #include <array>
@@ -58,8 +70,13 @@ struct ClipPolygon {
   bool empty() const { return count == 0; }
 };
 
-/// Clips `triangle` (3x3, one vertex per row) by the closed tet `tet` (4x3, one vertex per row,
-/// either orientation). Exits early when the triangle lies strictly outside one face plane.
+/// The fixed directions d1, d2, d3 (spanning space) of the half-open rule, after the triangle's
+/// outward normal: (1, √2, √3), then x, then y.
+const std::array<Vector3, 3>& tie_break_directions();
+
+/// Clips `triangle` (3x3, one vertex per row) by the tet `tet` (4x3, one vertex per row,
+/// either orientation), with the half-open rule for a triangle in a face plane. Exits early
+/// when the triangle lies strictly outside one face plane.
 /// A degenerate (zero-volume) tet gives an empty polygon. Never produces NaN for finite input.
 ClipPolygon clip_triangle_tet(const Matrix3& triangle, const Eigen::Matrix<double, 4, 3>& tet);
 
@@ -68,8 +85,8 @@ ClipPolygon clip_triangle_tet(const Matrix3& triangle, const Eigen::Matrix<doubl
 /// The four values sum to 1 up to round-off; NaN/inf only for a zero-volume tet.
 Eigen::Vector4d tet_barycentric(const Vector3& x, const Eigen::Matrix<double, 4, 3>& tet);
 
-/// Point-collocation baseline (dissertation §5.3.5): the triangle vertices that lie in the
-/// closed tet (barycentric coordinates >= -kClipSnap), in increasing order, with their
+/// Point-collocation baseline (dissertation §5.3.5): the triangle vertices that lie in the tet
+/// (barycentric coordinates >= 0 after snapping, the half-open rule on face planes), in increasing order, with their
 /// barycentric coordinates (clamped to [0, 1], summing to 1). The caller applies weight A/3 each.
 struct CollocationPoints {
   int count = 0;

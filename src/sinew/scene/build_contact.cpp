@@ -82,7 +82,7 @@ VectorX region_penalty_scales(const SceneConfig& scene, const fem::Problem& prob
   return scale;
 }
 
-/// Fills the geometry's surface (every body's boundary, in body order), its body ids and, when
+/// Fills the geometry's surface (every body's contact surface, in body order), its body ids and, when
 /// a region scales its penalty, the factors of every tet and surface triangle: a tet takes its
 /// region's, a surface triangle the region of the tet it bounds. Left empty (all 1) otherwise.
 void assemble_surfaces(const std::vector<Triangles>& surfaces, const VectorX& region_scale,
@@ -206,11 +206,11 @@ ContactSetup build_contact(const SceneConfig& scene, const fem::Problem& problem
     const fem::BodyRange& body = problem.bodies[b];
     setup.body_names.push_back(body.name);
     g.tet_body.segment(body.first_tet, body.num_tets).setConstant(static_cast<Index>(b));
-    surfaces.push_back(body_boundary(problem, body));
+    const std::string path = fmt::format("bodies[{}].contact", b);
+    surfaces.push_back(contact_surface(problem, body, scene.bodies[b].contact, body_boundary(problem, body), path, errors));
     setup.body_edge_length.push_back(mean_edge_length(mesh.rest, surfaces.back()));
     setup.body_young_modulus.push_back(body_young_modulus(problem, body));
-    const VectorX depths = body_depths(problem, body, scene.bodies[b].contact, surfaces.back(),
-                                       fmt::format("bodies[{}].contact", b), errors);
+    const VectorX depths = body_depths(problem, body, scene.bodies[b].contact, surfaces.back(), path, errors);
     if (depths.size() == body.num_nodes) g.depth.segment(body.first_node, body.num_nodes) = depths;
   }
   const VectorX region_scale = region_penalty_scales(scene, problem);

@@ -108,10 +108,12 @@ VectorX depth_from_field(const mesh::TetMesh& local, const std::string& name) {
 }
 
 /// The faces of `boundary` whose three nodes are all chosen by one of `selectors` (of body
-/// `body`); nothing after an error of a selector (each appended to `errors`).
+/// `body`), or with `keep_chosen` false the other faces; nothing after an error of a selector
+/// (each appended to `errors` as "<path>.<key>[k]: ...").
 std::optional<Triangles> faces_chosen_by(const fem::Problem& problem, const fem::BodyRange& body,
                                          const std::vector<NodeSelector>& selectors, const Triangles& boundary,
-                                         const std::string& path, std::vector<std::string>& errors) {
+                                         const std::string& path, const char* key, std::vector<std::string>& errors,
+                                         bool keep_chosen = true) {
   const mesh::TetMesh local = body_mesh(problem, body);
   std::vector<char> in_surface(static_cast<std::size_t>(boundary.rows()), 0);
   bool failed = false;
@@ -120,7 +122,7 @@ std::optional<Triangles> faces_chosen_by(const fem::Problem& problem, const fem:
     try {
       for (const Index v : select_nodes(local, selectors[s])) chosen[static_cast<std::size_t>(v)] = 1;
     } catch (const InputError& e) {
-      errors.push_back(fmt::format("{}.depth_nodes[{}]: {}", path, s, e.what()));
+      errors.push_back(fmt::format("{}.{}[{}]: {}", path, key, s, e.what()));
       failed = true;
       continue;
     }
@@ -133,7 +135,7 @@ std::optional<Triangles> faces_chosen_by(const fem::Problem& problem, const fem:
   if (failed) return std::nullopt;
   std::vector<Index> rows;
   for (Index f = 0; f < boundary.rows(); ++f)
-    if (in_surface[static_cast<std::size_t>(f)]) rows.push_back(f);
+    if ((in_surface[static_cast<std::size_t>(f)] != 0) == keep_chosen) rows.push_back(f);
   Triangles surface(static_cast<Index>(rows.size()), 3);
   for (std::size_t k = 0; k < rows.size(); ++k) surface.row(static_cast<Index>(k)) = boundary.row(rows[k]);
   return surface;
@@ -159,11 +161,18 @@ std::optional<Triangles> zero_depth_surface(const fem::Problem& problem, const f
                                      body.name, config.depth_surface_name, known.empty() ? "none" : known));
         return std::nullopt;
       }
-      surface = it->second;
+      // Only the faces of the set that are in `boundary` (without the excluded faces).
+      std::set<std::array<Index, 3>> keys;
+      for (Index f = 0; f < boundary.rows(); ++f) keys.insert(sorted_face(boundary(f, 0), boundary(f, 1), boundary(f, 2)));
+      std::vector<Index> rows;
+      for (Index f = 0; f < it->second.rows(); ++f)
+        if (keys.count(sorted_face(it->second(f, 0), it->second(f, 1), it->second(f, 2)))) rows.push_back(f);
+      surface = Triangles(static_cast<Index>(rows.size()), 3);
+      for (std::size_t k = 0; k < rows.size(); ++k) surface->row(static_cast<Index>(k)) = it->second.row(rows[k]);
       break;
     }
     case BodyContactConfig::DepthSurface::Nodes:
-      surface = faces_chosen_by(problem, body, config.depth_nodes, boundary, path, errors);
+      surface = faces_chosen_by(problem, body, config.depth_nodes, boundary, path, "depth_nodes", errors);
       if (!surface) return std::nullopt;
       break;
     case BodyContactConfig::DepthSurface::Region: {
@@ -195,6 +204,19 @@ std::array<Index, 3> sorted_face(Index a, Index b, Index c) {
 
 Triangles body_boundary(const fem::Problem& problem, const fem::BodyRange& body) {
   return mesh::boundary_triangles(problem.mesh.tets.middleRows(body.first_tet, body.num_tets));
+}
+
+Triangles contact_surface(const fem::Problem& problem, const fem::BodyRange& body, const BodyContactConfig& config,
+                          const Triangles& boundary, const std::string& path, std::vector<std::string>& errors) {
+  if (config.exclude_faces.empty()) return boundary;
+  std::optional<Triangles> kept =
+      faces_chosen_by(problem, body, config.exclude_faces, boundary, path, "exclude_faces", errors, false);
+  if (!kept) return boundary;
+  if (kept->rows() == 0) {
+    errors.push_back(fmt::format("{}.exclude_faces: excludes every boundary face of body \"{}\"", path, body.name));
+    return boundary;
+  }
+  return *kept;
 }
 
 VectorX read_depth_file(const std::string& path, Index expected) {

@@ -67,17 +67,21 @@ class SceneReader {
     check_body_names(config);
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       const json& contact = bodies[b].at("contact");
+      // Selectors of this body's nodes: depth_nodes, exclude_faces.
+      auto read_selectors = [&](const char* key, std::vector<NodeSelector>& out) {
+        const json& selectors = contact.at(key);
+        for (std::size_t k = 0; k < selectors.size(); ++k) {
+          json selector = selectors[k];
+          selector["body"] = config.bodies[b].name;
+          out.push_back(read_selector(
+              selector, json_path_index(json_path_key(json_path_key(json_path_index("bodies", b), "contact"), key), k),
+              config));
+        }
+      };
+      if (contact.contains("exclude_faces")) read_selectors("exclude_faces", config.bodies[b].contact.exclude_faces);
       if (!contact.contains("depth_nodes")) continue;
       config.bodies[b].contact.depth_surface = BodyContactConfig::DepthSurface::Nodes;
-      const json& selectors = contact.at("depth_nodes");
-      for (std::size_t k = 0; k < selectors.size(); ++k) {
-        json selector = selectors[k];
-        selector["body"] = config.bodies[b].name;
-        config.bodies[b].contact.depth_nodes.push_back(read_selector(
-            selector,
-            json_path_index(json_path_key(json_path_key(json_path_index("bodies", b), "contact"), "depth_nodes"), k),
-            config));
-      }
+      read_selectors("depth_nodes", config.bodies[b].contact.depth_nodes);
     }
 
     const json& conditions = scene.at("boundary_conditions");

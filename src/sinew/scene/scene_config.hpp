@@ -96,6 +96,11 @@ struct BodyContactConfig {
   /// Nodal depths from this node field of the body's mesh file (TetMesh::node_fields), overrides
   /// the surface options above; at most one of depth_file and depth_field is set.
   std::string depth_field;
+  /// Boundary faces whose three nodes are all chosen by one of these selectors are not a surface
+  /// of the real object (e.g. where the model was cut by a plane): they are left out of the
+  /// contact surface (no contact integral over them) and out of the zero-depth surface. The
+  /// body's tets behind them can still be penetrated.
+  std::vector<NodeSelector> exclude_faces;
 };
 
 struct BodyConfig {

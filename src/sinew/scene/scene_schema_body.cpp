@@ -199,6 +199,13 @@ SchemaNode body_schema() {
                            "do not count)",
                            ref("", "a node selector (its \"body\" is this body)", "node_selector"))
                          .items(1),
+                     array("exclude_faces",
+                           "boundary faces whose three nodes are all chosen by one of these selectors are not a "
+                           "surface of the real object, e.g. where the model was cut by a plane: they take no part in "
+                           "contact (no contact integral over them) and are not zero-depth surface; the tets behind "
+                           "them can still be penetrated (docs/contact.md)",
+                           ref("", "a node selector (its \"body\" is this body)", "node_selector"))
+                         .items(1),
                      string("depth_file",
                             "nodal depths instead (text: one number per node of the body's mesh, in mesh order; "
                             "relative paths start at the scene file's directory)")
