@@ -12,6 +12,7 @@ PACKAGES=(
   libgmsh-dev gmsh       # Gmsh C++ API: OpenCASCADE geometry, meshing, .msh reading
   libtbb-dev             # parallel assembly
   libassimp-dev          # surface meshes in: STL, OBJ, PLY, glTF/GLB
+  libcgal-dev            # surfaces to meshes: repair, inside/distance queries, Mesh_3 tetrahedralization
   nlohmann-json3-dev     # scene files
   libcli11-dev           # command line
   libfmt-dev libspdlog-dev  # formatting and logging

@@ -451,7 +451,7 @@ TEST(LoadSceneErrors, MissingMeshFile) {
 TEST(LoadSceneErrors, MeshNeedsExactlyOneSource) {
   json scene = minimal_scene();
   scene["bodies"][0]["mesh"]["file"] = "block.msh";
-  EXPECT_EQ(parse_error(scene), "bodies[0].mesh: must hold exactly one of \"file\", \"generate\"; found \"file\", \"generate\"");
+  EXPECT_EQ(parse_error(scene), "bodies[0].mesh: must hold exactly one of \"file\", \"generate\", \"surfaces\"; found \"file\", \"generate\"");
 }
 
 TEST(LoadSceneErrors, ShapesAreCheckedRecursively) {
