@@ -24,19 +24,23 @@ using namespace sinew;
 
 namespace {
 
+/// The run's counts and per-phase split as benchmark counters.
+void record(benchmark::State& state, const app::RunReport& report) {
+  const auto& r = report.result;
+  state.counters["increments"] = r.segments_completed;
+  state.counters["steps"] = r.steps;
+  state.counters["newton_its"] = r.newton_iterations;
+  state.counters["cuts"] = r.cuts;
+  bench::set_phase_counters(state, report, r.times);
+}
+
 void BM_KneeFlexion(benchmark::State& state, double element_size) {
   scene::SceneConfig config = scene::load_scene_file(std::string(SINEW_SOURCE_DIR) + "/examples/knee-flexion.json");
   if (element_size > 0)
     for (auto& body : config.bodies) body.mesh.generate.element_size = element_size;
   config.output.vtu = false;
   for (auto _ : state) {
-    const app::RunReport report = bench::run_once(state, config, "knee");
-    const auto& r = report.result;
-    state.counters["increments"] = r.segments_completed;
-    state.counters["steps"] = r.steps;
-    state.counters["newton_its"] = r.newton_iterations;
-    state.counters["cuts"] = r.cuts;
-    bench::set_phase_counters(state, report, r.times);
+    record(state, bench::run_once(state, config, "knee"));
   }
 }
 
@@ -48,13 +52,7 @@ void BM_VhKneeFlexion(benchmark::State& state) {
   }
   config.output.vtu = false;
   for (auto _ : state) {
-    const app::RunReport report = bench::run_once(state, config, "vh-knee");
-    const auto& r = report.result;
-    state.counters["increments"] = r.segments_completed;
-    state.counters["steps"] = r.steps;
-    state.counters["newton_its"] = r.newton_iterations;
-    state.counters["cuts"] = r.cuts;
-    bench::set_phase_counters(state, report, r.times);
+    record(state, bench::run_once(state, config, "vh-knee"));
   }
 }
 
