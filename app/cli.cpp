@@ -18,6 +18,7 @@
 #include "sinew/io/atomic_file.hpp"
 #include "sinew/io/output_directory.hpp"
 #include "sinew/model/model.hpp"
+#include "sinew/scene/element_size.hpp"
 #include "sinew/scene/load_scene.hpp"
 #include "sinew/scene/scene_schema.hpp"
 
@@ -35,20 +36,7 @@ struct SceneOverrides {
 };
 
 scene::SceneConfig with_overrides(scene::SceneConfig config, const SceneOverrides& overrides) {
-  if (overrides.element_size > 0) {
-    for (auto& body : config.bodies) {
-      if (body.mesh.surfaces) {
-        // The size zones keep their ratio to the element size.
-        surface::TetrahedralizeOptions& options = body.mesh.surfaces->options;
-        const double ratio = overrides.element_size / options.element_size;
-        options.element_size = overrides.element_size;
-        options.facet_distance *= ratio;
-        for (surface::SizeZone& zone : options.size_zones) zone.size *= ratio;
-      } else if (body.mesh.file.empty()) {
-        body.mesh.generate.element_size = overrides.element_size;
-      }
-    }
-  }
+  if (overrides.element_size > 0) scene::set_element_size(config, overrides.element_size);
   if (!overrides.data_directory.empty()) config.data_directory = overrides.data_directory;
   if (overrides.max_tets > 0) config.limits.max_tets = overrides.max_tets;
   return config;

@@ -13,6 +13,7 @@
 #include <filesystem>
 
 #include "examples/example_support.hpp"
+#include "sinew/scene/element_size.hpp"
 
 namespace sinew::examples_test {
 namespace {
@@ -30,14 +31,8 @@ TEST(VhKneeExample, CoarseFlexionKeepsThePatellaInTheGroove) {
   GTEST_SKIP() << "not in the sanitizer build";
 #endif
   ASSERT_EQ(config.bodies.size(), 2u);
-  for (auto& body : config.bodies) {
-    ASSERT_TRUE(body.mesh.surfaces.has_value());
-    surface::TetrahedralizeOptions& options = body.mesh.surfaces->options;
-    const double ratio = 22.0 / options.element_size;
-    options.element_size = 22;
-    options.facet_distance *= ratio;
-    for (surface::SizeZone& zone : options.size_zones) zone.size *= ratio;
-  }
+  for (const auto& body : config.bodies) ASSERT_TRUE(body.mesh.surfaces.has_value());
+  scene::set_element_size(config, 22);
   auto& tibia = config.bodies.at(1).regions.at("tibia");
   ASSERT_EQ(tibia.rigid_kind, fem::RigidBody::Kind::Prescribed);
   ASSERT_NEAR(tibia.rigid_motion.angle, 150.0 * M_PI / 180.0, 1e-12);
