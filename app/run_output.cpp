@@ -42,6 +42,7 @@ RunOutput::RunOutput(std::string directory, model::Model& model, const scene::Ou
         } else {
           for (const char* c : {".fx", ".fy", ".fz"}) columns.push_back(prefix + c);
         }
+        columns.push_back(prefix + ".max_penetration");
       }
   }
   steps_ = std::make_unique<io::CsvTable>(directory_ + "/steps.csv", columns);
@@ -148,6 +149,7 @@ void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State&
         const Vector3& f = c.force_between(a, b);
         for (int k = 0; k < 3; ++k) row.emplace_back(f[k]);
       }
+      row.emplace_back(c.max_penetration_between(a, b));
     }
   }
   if (flush) {

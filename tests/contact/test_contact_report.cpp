@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -88,6 +89,35 @@ TEST_P(ContactReportMethods, EachForceGoesToItsOwnBodyPair) {
   EXPECT_LT((sum - on_body0).norm(), 1e-12 * on_body0.norm());
   for (Index i = 0; i < 3; ++i)
     for (Index j = 0; j <= i; ++j) EXPECT_EQ(r.body_pair_force[static_cast<std::size_t>(i * 3 + j)].norm(), 0.0);
+}
+
+// The largest penetration per body pair: the three-body split above, with each pair's figure
+// positive where that pair touches, none larger than the overall largest, and the overall
+// largest being one of them; entries i > j stay zero.
+TEST_P(ContactReportMethods, MaxPenetrationPerBodyPair) {
+  auto boxes = st::two_boxes(2, Vector3(0.55, 0.3, -0.2), 0.4, 7.0, true);
+  ContactGeometry& g = boxes.geometry;
+  g.surface_body.tail(g.surface.rows() / 4).setConstant(2);
+  g.tet_body.tail(g.tets.rows() / 4).setConstant(2);
+  g.penalty = MatrixX::Constant(3, 3, 7.0);
+  ContactEnergy energy(g, {GetParam(), PairHessian::GaussNewton});
+  const ContactReport r = contact_report(energy, boxes.x);
+  ASSERT_EQ(r.body_pair_max_penetration.size(), 9u);
+  ASSERT_GT(r.max_penetration, 0);
+  EXPECT_GT(r.max_penetration_between(0, 1), 0);
+  EXPECT_GT(r.max_penetration_between(0, 2), 0);
+  double largest = 0;
+  for (Index i = 0; i < 3; ++i)
+    for (Index j = 0; j < 3; ++j) {
+      const double d = r.body_pair_max_penetration[static_cast<std::size_t>(i * 3 + j)];
+      EXPECT_GE(d, 0);
+      EXPECT_LE(d, r.max_penetration);
+      if (i > j) {
+        EXPECT_EQ(d, 0.0);
+      }
+      largest = std::max(largest, d);
+    }
+  EXPECT_EQ(largest, r.max_penetration);
 }
 
 // Reporting at a configuration other than the energy's keeps the energy at its own: the same

@@ -41,6 +41,7 @@ ContactReport contact_report(const CollisionSet& collisions) {
   r.num_bodies = bodies;
   r.body_pair_force.assign(static_cast<std::size_t>(bodies * bodies), Vector3::Zero());
   r.self_contact_force_magnitude = VectorX::Zero(bodies);
+  r.body_pair_max_penetration.assign(static_cast<std::size_t>(bodies * bodies), 0.0);
   r.nodal_force = NodalVectors::Zero(x.rows(), 3);
   r.pairs = static_cast<Index>(collisions.pairs().size());
   r.energy = contact_energy_value(collisions, x);
@@ -56,6 +57,8 @@ ContactReport contact_report(const CollisionSet& collisions) {
     const auto nodes = collisions.nodes(p);
     const Index body_t = g.surface_body[p.triangle], body_e = g.tet_body[p.tet];
     const Index lo = std::min(body_t, body_e), hi = std::max(body_t, body_e);
+    double& pair_max = r.body_pair_max_penetration[static_cast<std::size_t>(lo * bodies + hi)];
+    pair_max = std::max(pair_max, m.max_depth);
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       const Vector3 f = force.segment<3>(3 * static_cast<Index>(i));
       const Index a = nodes[i];

@@ -25,12 +25,19 @@ struct ContactReport {
   /// Self-contact per body b (#B): half the sum over b's nodes of the magnitude of the nodal
   /// force from pairs within b (a magnitude: the vector sum of internal forces is zero). Force.
   VectorX self_contact_force_magnitude;
+  /// Largest interpolated depth on the polygons between bodies i and j (self-contact when
+  /// i == j), indexed [i * #B + j] for i <= j; zero for i > j (L).
+  std::vector<double> body_pair_max_penetration;
   NodalVectors nodal_force;      ///< -dEc/dx, #V x 3 (force)
   VectorX nodal_pressure;        ///< |nodal force| / (1/3 of the adjacent surface area), #V (stress)
 
   /// Force on body i from body j, i < j (force).
   const Vector3& force_between(Index i, Index j) const {
     return body_pair_force[static_cast<std::size_t>(i * num_bodies + j)];
+  }
+  /// Largest penetration between bodies i and j, i <= j (L).
+  double max_penetration_between(Index i, Index j) const {
+    return body_pair_max_penetration[static_cast<std::size_t>(i * num_bodies + j)];
   }
 };
 
