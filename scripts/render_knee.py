@@ -2,7 +2,7 @@
 """Renders a knee-flexion run (examples/knee-flexion.json) as PNG.
 
 Usage: /usr/bin/python3 scripts/render_knee.py OUTPUT_DIR [--angles 0 50 100 150] [--flexion 150]
-                                               [--out DIR] [--vh]
+                                               [--out DIR] [--vh] [--fold-window A0 A1 U0 U1]
 
 --vh: a run of examples/vh-knee-flexion.json (the data's frame: looked at along x, the epicondylar
 axis, +z anterior to the right, +y up; the section is the plane x = -148 mm through the patella).
@@ -30,6 +30,10 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 REGION_COLOURS = ["#b0b0b0", "#d9d9d9", "#5a8dd6", "#2f5fb3", "#c25cc2", "#5cb85c", "#e6c229", "#f2c9a0"]
+# The VH leg's regions: femur, tibia, patella, ligament, tendon, graded_2, graded_1, muscle, skin
+# (scripts/make_vh_knee.py).
+VH_REGION_COLOURS = ["#b0b0b0", "#d9d9d9", "#a0a0a0", "#2f5fb3", "#2f5fb3", "#c25cc2", "#5cb85c", "#d98c6a",
+                     "#f2c9a0"]
 
 
 class Frame:
@@ -163,9 +167,13 @@ def main():
     parser.add_argument("--flexion", type=float, default=150.0, help="flexion angle at lambda = 1 (degrees)")
     parser.add_argument("--out")
     parser.add_argument("--vh", action="store_true", help="a run of examples/vh-knee-flexion.json")
+    parser.add_argument("--fold-window", type=float, nargs=4, metavar=("A0", "A1", "U0", "U1"),
+                        help="the close-up's window in the picture's coordinates (across, up; mm)")
     args = parser.parse_args()
-    global FRAME
+    global FRAME, REGION_COLOURS
     FRAME = VH if args.vh else GENERATED
+    if args.vh:
+        REGION_COLOURS = VH_REGION_COLOURS
     directory = pathlib.Path(args.directory)
     out = pathlib.Path(args.out) if args.out else directory
     out.mkdir(parents=True, exist_ok=True)
@@ -195,7 +203,8 @@ def main():
 
     # Behind the knee: the posterior crease, where the skin-fat of the calf folds onto the thigh's.
     fig, ax = plt.subplots(figsize=(7.5, 6))
-    draw_section(ax, last, "contact_pressure", "contact pressure (kPa)", window=FRAME.fold_window, cmap="viridis")
+    window = tuple(args.fold_window) if args.fold_window else FRAME.fold_window
+    draw_section(ax, last, "contact_pressure", "contact pressure (kPa)", window=window, cmap="viridis")
     ax.set_title(f"behind the knee at {angle:.0f}° flexion: section, contact pressure", fontsize=9)
     fig.tight_layout()
     fig.savefig(out / "knee_fold.png", dpi=110)
