@@ -328,6 +328,7 @@ class TimedLinearSolver final : public solver::LinearSolver {
     return stats;
   }
   const char* name() const override { return inner_->name(); }
+  int factorizations() const override { return inner_->factorizations(); }
   /// Where the times go (null: nowhere).
   void record_into(Phases* phases) { phases_ = phases; }
   double last_relative_residual() const { return last_relative_residual_; }

@@ -31,13 +31,16 @@ void record(benchmark::State& state, const app::RunReport& report) {
   state.counters["steps"] = r.steps;
   state.counters["newton_its"] = r.newton_iterations;
   state.counters["cuts"] = r.cuts;
+  state.counters["factorizations"] = r.linear.factorizations;
+  state.counters["linear_its"] = r.linear.linear_iterations;
   bench::set_phase_counters(state, report, r.times);
 }
 
-void BM_KneeFlexion(benchmark::State& state, double element_size) {
+void BM_KneeFlexion(benchmark::State& state, double element_size, int lagged_iterations) {
   scene::SceneConfig config = scene::load_scene_file(std::string(SINEW_SOURCE_DIR) + "/examples/knee-flexion.json");
   if (element_size > 0)
     for (auto& body : config.bodies) body.mesh.generate.element_size = element_size;
+  config.solver.linear.lagged_iterations = lagged_iterations;
   config.output.vtu = false;
   for (auto _ : state) {
     record(state, bench::run_once(state, config, "knee"));
@@ -56,9 +59,14 @@ void BM_VhKneeFlexion(benchmark::State& state) {
   }
 }
 
-BENCHMARK_CAPTURE(BM_KneeFlexion, h16, 16.0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(BM_KneeFlexion, h12, 12.0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(BM_KneeFlexion, full, 0.0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+// Each size with and without lagged factorizations, one after the other (a shared machine:
+// compare within a run). Filter with --benchmark_filter.
+BENCHMARK_CAPTURE(BM_KneeFlexion, h16, 16.0, 0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_KneeFlexion, h16_lagged10, 16.0, 10)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_KneeFlexion, h16_lagged20, 16.0, 20)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_KneeFlexion, h12, 12.0, 0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_KneeFlexion, full, 0.0, 0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_KneeFlexion, full_lagged20, 0.0, 20)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 BENCHMARK(BM_VhKneeFlexion)->Name("BM_VhKneeFlexion/full")->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 
 }  // namespace

@@ -1,6 +1,7 @@
 /// Benchmark (issue 2): a Mooney-Rivlin block of about 10k nodes / 40k tets compressed 30 % in
 /// 10 increments. Prints the total time, Newton iterations and the split between forces and
-/// stiffness, linear solve and line search, for each predictor and for the seed's GMRES.
+/// stiffness, linear solve and line search, factorizations and lagged-CG iterations, for each
+/// predictor, with and without lagged factorizations.
 /// Timings are measured here, never asserted in tests.
 
 #include <benchmark/benchmark.h>
@@ -51,10 +52,11 @@ scene::SceneConfig block_scene(double element_size) {
 }
 
 void BM_CompressBlock(benchmark::State& state, solver::LoadSteppingOptions::Predictor predictor,
-                      solver::LinearSolverOptions::Kind linear) {
+                      solver::LinearSolverOptions::Kind linear, int lagged_iterations) {
   scene::SceneConfig scene = block_scene(0.95);  // about 9k nodes, 43k tets
   scene.solver.stepping.predictor = predictor;
   scene.solver.linear.kind = linear;
+  scene.solver.linear.lagged_iterations = lagged_iterations;
   if (linear != solver::LinearSolverOptions::Kind::Cholmod) {
     scene.solver.linear.max_iterations = 500;
     scene.solver.newton.max_iterations = 200;
@@ -73,6 +75,8 @@ void BM_CompressBlock(benchmark::State& state, solver::LoadSteppingOptions::Pred
     state.counters["nodes"] = problem.mesh.num_nodes();
     state.counters["tets"] = problem.mesh.num_tets();
     state.counters["newton_its"] = result.newton_iterations;
+    state.counters["factorizations"] = result.linear.factorizations;
+    state.counters["linear_its"] = result.linear.linear_iterations;
     state.counters["steps"] = result.steps;
     state.counters["solve_s"] = seconds;
     state.counters["forces_stiffness_s"] = t.forces_and_stiffness;
@@ -86,8 +90,13 @@ void BM_CompressBlock(benchmark::State& state, solver::LoadSteppingOptions::Pred
 
 using P = solver::LoadSteppingOptions::Predictor;
 using L = solver::LinearSolverOptions::Kind;
-BENCHMARK_CAPTURE(BM_CompressBlock, tangent_cholmod, P::Tangent, L::Cholmod)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(BM_CompressBlock, two_point_cholmod, P::TwoPoint, L::Cholmod)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+// The lagged variants alternate with the plain one (this machine is shared: compare within a run).
+BENCHMARK_CAPTURE(BM_CompressBlock, tangent_cholmod, P::Tangent, L::Cholmod, 0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_CompressBlock, tangent_cholmod_lagged10, P::Tangent, L::Cholmod, 10)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_CompressBlock, tangent_cholmod_lagged20, P::Tangent, L::Cholmod, 20)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_CompressBlock, tangent_cholmod_lagged40, P::Tangent, L::Cholmod, 40)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_CompressBlock, two_point_cholmod, P::TwoPoint, L::Cholmod, 0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_CompressBlock, two_point_cholmod_lagged20, P::TwoPoint, L::Cholmod, 20)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 
 }  // namespace
 

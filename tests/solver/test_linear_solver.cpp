@@ -95,5 +95,81 @@ TEST(CholmodSolver, OutOfMemoryIsItsOwnError) {
   EXPECT_TRUE(solver->solve(VectorX::Ones(300), x).success);
 }
 
+// Lagged factorizations: a nearby matrix is solved by CG preconditioned with the factor of the
+// first, without a factorization of its own; a matrix too far from it for the iteration budget is
+// factorized and solved directly; an indefinite one is reported as not solved (Newton shifts).
+TEST(CholmodSolver, LaggedFactorizationPreconditionsTheNextMatrices) {
+  LinearSolverOptions options;
+  options.lagged_iterations = 10;
+  options.lagged_tolerance = 1e-10;
+  auto solver = make_linear_solver(options);
+  const int n = 300;
+  const VectorX expected = VectorX::LinSpaced(n, -1.0, 2.0);
+  const fem::SparseMatrix first = laplacian(n, 0.5);
+  solver->analyze(first);
+  ASSERT_TRUE(solver->factorize(first));
+  EXPECT_EQ(solver->factorizations(), 1);
+  VectorX x;
+  LinearSolveStats stats = solver->solve(first * expected, x);
+  ASSERT_TRUE(stats.success);
+  EXPECT_LE(stats.iterations, 2) << "the exact factor preconditions its own matrix perfectly";
+
+  const fem::SparseMatrix near = laplacian(n, 0.52);  // 1 % off on the diagonal
+  ASSERT_TRUE(solver->factorize(near));
+  stats = solver->solve(near * expected, x);
+  ASSERT_TRUE(stats.success);
+  EXPECT_EQ(solver->factorizations(), 1) << "no factorization: CG with the lagged factor converged";
+  EXPECT_GT(stats.iterations, 1);
+  EXPECT_LE(stats.iterations, 10);
+  EXPECT_LT((near * x - near * expected).norm(), 1e-10 * (near * expected).norm());
+  EXPECT_LT((x - expected).norm(), 1e-8 * expected.norm());
+
+  const fem::SparseMatrix far = laplacian(n, 50.0);  // CG needs more than 10 iterations
+  ASSERT_TRUE(solver->factorize(far));
+  stats = solver->solve(far * expected, x);
+  ASSERT_TRUE(stats.success);
+  EXPECT_EQ(solver->factorizations(), 2) << "factorized after the lagged CG ran out of iterations";
+  EXPECT_EQ(stats.iterations, 10);
+  EXPECT_LT((x - expected).norm(), 1e-10 * expected.norm());
+
+  const fem::SparseMatrix indefinite = laplacian(n, -1.5);
+  ASSERT_TRUE(solver->factorize(indefinite));  // deferred: the answer comes with the solve
+  stats = solver->solve(indefinite * expected, x);
+  EXPECT_FALSE(stats.success) << "negative curvature, then a failed factorization";
+  EXPECT_EQ(solver->factorizations(), 3);
+  // No good factor is left: the next matrix is factorized at once.
+  EXPECT_TRUE(solver->factorize(first));
+  EXPECT_EQ(solver->factorizations(), 4);
+}
+
+// A new sparsity pattern is analyzed only when a factorization is needed: until then the old
+// factor keeps preconditioning (its size is the same).
+TEST(CholmodSolver, LaggedFactorizationSurvivesANewPattern) {
+  LinearSolverOptions options;
+  options.lagged_iterations = 20;
+  options.lagged_tolerance = 1e-10;
+  auto solver = make_linear_solver(options);
+  const int n = 100;
+  const fem::SparseMatrix tridiagonal = laplacian(n, 0.5);
+  solver->analyze(tridiagonal);
+  ASSERT_TRUE(solver->factorize(tridiagonal));
+  fem::SparseMatrix wider = tridiagonal;
+  wider.coeffRef(0, n - 1) = -0.01;  // a new entry: a contact pair between the ends
+  wider.coeffRef(n - 1, 0) = -0.01;
+  solver->analyze(wider);
+  ASSERT_TRUE(solver->factorize(wider));
+  const VectorX expected = VectorX::Ones(n);
+  VectorX x;
+  const LinearSolveStats stats = solver->solve(wider * expected, x);
+  ASSERT_TRUE(stats.success);
+  EXPECT_EQ(solver->factorizations(), 1);
+  EXPECT_LT((x - expected).norm(), 1e-8 * expected.norm());
+  // Forced past the budget, it analyzes the new pattern and factorizes.
+  const fem::SparseMatrix far = wider * 40.0;
+  ASSERT_TRUE(solver->factorize(far));
+  EXPECT_TRUE(solver->solve(far * expected, x).success);
+  EXPECT_LT((x - expected).norm(), 1e-10 * expected.norm());
+}
+
 }  // namespace
 }  // namespace sinew::solver

@@ -45,6 +45,8 @@ solver::StaticSolverOptions read_solver(const json& j, ReadErrors& errors) {
   options.linear.tolerance = linear.at("tolerance").get<double>();
   options.linear.max_iterations = linear.at("max_iterations").get<int>();
   options.linear.gmres_restart = linear.at("gmres_restart").get<int>();
+  options.linear.lagged_iterations = linear.at("lagged_iterations").get<int>();
+  options.linear.lagged_tolerance = linear.at("lagged_tolerance").get<double>();
   return options;
 }
 

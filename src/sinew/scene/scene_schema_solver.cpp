@@ -88,6 +88,17 @@ SchemaNode solver_schema() {
                                 .min(1)
                                 .fallback(linear.max_iterations),
                             integer("gmres_restart", "GMRES restart length").min(1).max(kMaxRestart).fallback(linear.gmres_restart),
+                            integer("lagged_iterations",
+                                    "cholmod only: CG iterations, preconditioned by the last Cholesky factorization, "
+                                    "tried on each new Newton matrix before it is factorized itself; 0 = factorize "
+                                    "every matrix (docs/solver.md)")
+                                .min(0)
+                                .max(kMaxLinearIterations)
+                                .fallback(linear.lagged_iterations),
+                            number("lagged_tolerance", "relative residual at which that lagged CG stops")
+                                .min(kMinTolerance)
+                                .below(1)
+                                .fallback(linear.lagged_tolerance),
                         })
                      .fallback(json::object()),
              })

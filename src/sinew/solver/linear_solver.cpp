@@ -4,6 +4,9 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <unsupported/Eigen/IterativeSolvers>
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "sinew/core/error.hpp"
@@ -16,44 +19,131 @@ double relative_residual(const SparseMatrix& K, const VectorX& x, const VectorX&
   return nb > 0 ? (K * x - b).norm() / nb : (K * x).norm();
 }
 
+/// CHOLMOD's supernodal LL^T. With options.lagged_iterations > 0, a new matrix is not
+/// factorized at once: CG preconditioned by the last good factorization solves with it, and only
+/// when CG does not reach options.lagged_tolerance within that many iterations (or meets
+/// negative curvature) is the matrix factorized (docs/solver.md, "Lagged factorizations").
 class CholmodSolver final : public LinearSolver {
  public:
-  CholmodSolver() {
+  explicit CholmodSolver(const LinearSolverOptions& options)
+      : lagged_iterations_(options.lagged_iterations), lagged_tolerance_(options.lagged_tolerance) {
     // An indefinite matrix is an expected event (the caller regularizes); keep CHOLMOD quiet.
     llt_.cholmod().print = 0;
   }
   void analyze(const SparseMatrix& K) override {
-    llt_.analyzePattern(K);
-    check_memory("analyze");
+    if (lagged_iterations_ > 0 && factor_valid_) {
+      pattern_pending_ = true;  // analyzing now would discard the factor that preconditions CG
+      return;
+    }
+    analyze_now(K);
   }
   bool factorize(const SparseMatrix& K) override {
     K_ = K;  // owned: the caller's matrix may be a temporary (a regularized copy)
-    llt_.factorize(K_);
-    check_memory("factorize");
-    return llt_.info() == Eigen::Success;
+    if (lagged_iterations_ > 0 && factor_valid_ && factor_size_ == K_.rows() && required_ > 0) {
+      lagged_ = true;
+      return true;
+    }
+    return factorize_now();
   }
   LinearSolveStats solve(const VectorX& b, VectorX& x) override {
+    if (!lagged_) return direct_solve(b, x);
+    LinearSolveStats stats = lagged_cg(b, x);
+    if (stats.success) return stats;
+    const int cg_iterations = stats.iterations;
+    if (!factorize_now()) {
+      stats = LinearSolveStats{};
+      stats.iterations = cg_iterations;
+      return stats;  // indefinite: the caller shifts
+    }
+    stats = direct_solve(b, x);
+    stats.iterations = cg_iterations;
+    return stats;
+  }
+  const char* name() const override { return name_of(LinearSolverOptions::Kind::Cholmod).data(); }
+  int factorizations() const override { return factorizations_; }
+  void require_relative_residual(double eta) override { required_ = eta; }
+
+ private:
+  void analyze_now(const SparseMatrix& K) {
+    llt_.analyzePattern(K);
+    check_memory("analyze", K);
+    pattern_pending_ = false;
+    factor_valid_ = false;
+  }
+  bool factorize_now() {
+    lagged_ = false;
+    if (pattern_pending_) analyze_now(K_);
+    llt_.factorize(K_);
+    check_memory("factorize", K_);
+    ++factorizations_;
+    factor_valid_ = llt_.info() == Eigen::Success;
+    factor_size_ = K_.rows();
+    return factor_valid_;
+  }
+  LinearSolveStats direct_solve(const VectorX& b, VectorX& x) {
     LinearSolveStats stats;
     x = llt_.solve(b);
     stats.success = llt_.info() == Eigen::Success && x.allFinite();
     stats.relative_residual = relative_residual(K_, x, b);
     return stats;
   }
-  const char* name() const override { return name_of(LinearSolverOptions::Kind::Cholmod).data(); }
-
- private:
+  /// Preconditioned CG on K_ x = b from x = 0 with the last factorization as preconditioner.
+  /// success only when |K_ x - b| <= min(lagged_tolerance, required) |b| within lagged_iterations and every
+  /// search direction had positive curvature (so x is a descent direction for b = -g).
+  LinearSolveStats lagged_cg(const VectorX& b, VectorX& x) {
+    LinearSolveStats stats;
+    x = VectorX::Zero(b.size());
+    const double norm_b = b.norm();
+    if (norm_b == 0) {
+      stats.success = true;
+      return stats;
+    }
+    VectorX r = b;
+    VectorX z = llt_.solve(r);
+    VectorX p = z;
+    VectorX Kp(b.size());
+    double rz = r.dot(z);
+    for (int k = 1; k <= lagged_iterations_; ++k) {
+      stats.iterations = k;
+      Kp.noalias() = K_ * p;
+      const double curvature = p.dot(Kp);
+      if (!(curvature > 0) || !std::isfinite(curvature)) return stats;
+      const double alpha = rz / curvature;
+      x.noalias() += alpha * p;
+      r.noalias() -= alpha * Kp;
+      const double norm_r = r.norm();
+      if (norm_r <= std::min(lagged_tolerance_, required_) * norm_b) {
+        stats.relative_residual = norm_r / norm_b;
+        stats.success = x.allFinite();
+        return stats;
+      }
+      z = llt_.solve(r);
+      const double rz_next = r.dot(z);
+      p = z + (rz_next / rz) * p;
+      rz = rz_next;
+    }
+    return stats;
+  }
   /// CHOLMOD reports a failed allocation in its status; Eigen folds it into "not positive
   /// definite", which would send Newton into shifting and halving forever.
-  void check_memory(const char* phase) {
+  void check_memory(const char* phase, const SparseMatrix& K) {
     if (llt_.cholmod().status == CHOLMOD_OUT_OF_MEMORY) {
       llt_.cholmod().status = CHOLMOD_OK;
       throw OutOfMemoryError(fmt::format("out of memory: CHOLMOD could not {} the {} x {} stiffness matrix ({} nonzeros)",
-                                         phase, K_.rows(), K_.cols(), K_.nonZeros()));
+                                         phase, K.rows(), K.cols(), K.nonZeros()));
     }
   }
 
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt_;
-  SparseMatrix K_;  ///< the matrix last factorized
+  SparseMatrix K_;  ///< the matrix last given to factorize
+  int lagged_iterations_ = 0;
+  double lagged_tolerance_ = 1e-3;
+  double required_ = 1;  ///< the caller's bound on the relative residual (require_relative_residual)
+  int factorizations_ = 0;
+  bool factor_valid_ = false;     ///< llt_ holds a good factorization (of some earlier matrix when lagged_)
+  Index factor_size_ = 0;         ///< rows of the matrix factorized
+  bool pattern_pending_ = false;  ///< K_'s pattern is new and not yet analyzed
+  bool lagged_ = false;           ///< K_ is not factorized: solve with lagged CG
 };
 
 template <class Solver>
@@ -68,6 +158,7 @@ class IterativeSolver final : public LinearSolver {
   bool factorize(const SparseMatrix& K) override {
     K_ = K;  // owned: Eigen's solver keeps a reference to the matrix, which may be a temporary
     solver_.factorize(K_);
+    ++factorizations_;
     return solver_.info() != Eigen::NumericalIssue;
   }
   LinearSolveStats solve(const VectorX& b, VectorX& x) override {
@@ -81,9 +172,11 @@ class IterativeSolver final : public LinearSolver {
     return stats;
   }
   const char* name() const override { return name_; }
+  int factorizations() const override { return factorizations_; }
 
  private:
   Solver solver_;
+  int factorizations_ = 0;
   SparseMatrix K_;  ///< the matrix last factorized (the solver refers to it)
   const char* name_;
 };
@@ -94,7 +187,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& opti
   using Kind = LinearSolverOptions::Kind;
   switch (options.kind) {
     case Kind::Cholmod:
-      return std::make_unique<CholmodSolver>();
+      return std::make_unique<CholmodSolver>(options);
     case Kind::Gmres:
       return std::make_unique<IterativeSolver<Eigen::GMRES<SparseMatrix, Eigen::DiagonalPreconditioner<double>>>>(
           options, name_of(Kind::Gmres).data());

@@ -1,8 +1,10 @@
 #pragma once
 /// @file linear_solver.hpp
 /// Linear solvers for the Newton systems K dq = -g (K symmetric, usually positive definite):
-/// CHOLMOD's supernodal Cholesky (default), GMRES with diagonal preconditioning stopped at a
-/// loose relative residual (the seed's choice), and diagonally preconditioned CG.
+/// CHOLMOD's supernodal Cholesky (default; optionally lagged: the last factorization
+/// preconditions CG on the next matrices until CG needs too many iterations, docs/solver.md),
+/// GMRES with diagonal preconditioning stopped at a loose relative residual (the seed's choice),
+/// and diagonally preconditioned CG.
 
 #include <memory>
 
@@ -30,6 +32,11 @@ class LinearSolver {
   /// Solves K x = b with the last factorized K.
   virtual LinearSolveStats solve(const VectorX& b, VectorX& x) = 0;
   virtual const char* name() const = 0;
+  /// Numeric factorizations done so far (an iterative solver's preconditioner setups).
+  virtual int factorizations() const = 0;
+  /// The next solves must reach |K x - b| <= eta |b| if they are inexact (lagged CHOLMOD: the
+  /// smaller of eta and its lagged_tolerance; eta = 0: factorize, no lagged CG). Others ignore it.
+  virtual void require_relative_residual(double /*eta*/) {}
 };
 
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options);

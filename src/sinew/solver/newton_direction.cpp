@@ -7,6 +7,7 @@ namespace sinew::solver {
 Direction newton_direction(const SparseMatrix& K, bool fresh_pattern, const VectorX& g, LinearSolver& linear,
                            double first_shift) {
   Direction d;
+  const int factorizations_before = linear.factorizations();
   if (fresh_pattern) linear.analyze(K);
   const VectorX diag = K.diagonal().cwiseAbs().cwiseMax(1e-300);
   double shift = first_shift >= kSmallestShift ? first_shift : 0;
@@ -18,7 +19,7 @@ Direction newton_direction(const SparseMatrix& K, bool fresh_pattern, const Vect
       for (int k = 0; k < shifted.outerSize(); ++k) shifted.coeffRef(k, k) += shift * diag[k];
       M = &shifted;
     }
-    ++d.factorizations;
+    ++d.attempts;
     if (linear.factorize(*M)) {
       VectorX dq;
       const LinearSolveStats stats = linear.solve(-g, dq);
@@ -26,6 +27,7 @@ Direction newton_direction(const SparseMatrix& K, bool fresh_pattern, const Vect
       if (stats.success && g.dot(dq) < 0) {
         d.dq = std::move(dq);
         d.regularization = shift;
+        d.factorizations = linear.factorizations() - factorizations_before;
         return d;
       }
     }
@@ -34,6 +36,7 @@ Direction newton_direction(const SparseMatrix& K, bool fresh_pattern, const Vect
   // Last resort: diagonally scaled steepest descent.
   d.dq = -g.cwiseQuotient(diag);
   d.regularization = std::numeric_limits<double>::infinity();
+  d.factorizations = linear.factorizations() - factorizations_before;
   return d;
 }
 

@@ -10,7 +10,8 @@ namespace sinew::solver {
 struct Direction {
   VectorX dq;                  ///< #q, a descent direction (g · dq < 0)
   int linear_iterations = 0;   ///< of the iterative solver, summed over the attempts (0 for direct)
-  int factorizations = 0;      ///< attempts made (each one factorizes K or K + shift diag(K))
+  int attempts = 0;            ///< matrices tried (K, then K + shift diag(K) for growing shifts)
+  int factorizations = 0;      ///< numeric factorizations the attempts took (lagged CG may take none)
   /// Relative diagonal shift that gave dq (0: none); +inf when every attempt failed and dq is
   /// diagonally scaled steepest descent.
   double regularization = 0;

@@ -60,6 +60,13 @@ bool NewtonSolver::ensure_factorization(const fem::State& state, const NodalVect
   return factorized_;
 }
 
+LinearCounts NewtonSolver::counts() const {
+  LinearCounts counts;
+  counts.factorizations = linear_->factorizations();
+  counts.linear_iterations = linear_iterations_;
+  return counts;
+}
+
 bool NewtonSolver::solve_with_last_factorization(const VectorX& rhs, VectorX& x) {
   if (!factorized_) return false;
   Stopwatch watch(times_.linear_solve);
@@ -99,6 +106,7 @@ NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options
   if (on_iteration) on_iteration(record);
 
   double increment = std::numeric_limits<double>::infinity();
+  double previous_residual = residual;
   for (int it = 0;; ++it) {
     const double tolerance =
         std::max(options.residual_tolerance * scale, kRoundoffResidual * context.reference_force);
@@ -135,8 +143,14 @@ NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options
     Direction direction;
     {
       Stopwatch watch(times.linear_solve);
+      // An inexact (lagged) solve is used while Newton makes progress; when the last iteration
+      // did not halve the residual, this one solves exactly (an inexact direction can stall
+      // Newton, near round-off for one; docs/solver.md, "Lagged factorizations").
+      const bool stalling = it > 0 && residual > 0.5 * previous_residual;
+      linear_->require_relative_residual(stalling ? 0.0 : 1.0);
       direction = newton_direction(K_, fresh, g, *linear_, shift_hint);
     }
+    linear_iterations_ += direction.linear_iterations;
     factorized_ = true;  // of K_ or a shifted K_: good enough for a predictor
     // An indefinite tangent usually stays indefinite for a few iterations: start the next
     // search a hundredfold below the shift that worked instead of from zero.
@@ -196,6 +210,7 @@ NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options
       g = std::move(trial_g);
       scale = trial_scale;
     }
+    previous_residual = residual;
     residual = g.norm();
 
     record = IterationRecord{};

@@ -45,6 +45,12 @@ struct PhaseTimes {
   double total() const { return forces_and_stiffness + collision + linear_solve + line_search + other; }
 };
 
+/// What the linear solves cost, counted over a solver's life.
+struct LinearCounts {
+  int factorizations = 0;     ///< numeric factorizations, shifted retries included
+  int linear_iterations = 0;  ///< iterations of iterative or lagged solves
+};
+
 /// Adds the wall time of its scope to `sink`, except the time `objective` spent in collision
 /// detection meanwhile (Objective::collision_seconds, counted as PhaseTimes::collision).
 class PhaseTimer {
@@ -111,6 +117,8 @@ class NewtonSolver {
   const NewtonSetup& setup() const { return setup_; }
   /// Accumulated over the solver's life; `collision` is left to the caller (see PhaseTimes).
   PhaseTimes& times() { return times_; }
+  /// Accumulated over the solver's life.
+  LinearCounts counts() const;
 
  private:
   Objective& objective_;
@@ -119,6 +127,7 @@ class NewtonSolver {
   bool factorized_ = false;  ///< the linear solver holds a factorization of some K
   NewtonSetup setup_;
   PhaseTimes times_;
+  int linear_iterations_ = 0;
 };
 
 }  // namespace sinew::solver

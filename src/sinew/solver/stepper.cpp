@@ -11,6 +11,7 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
   Objective& objective = newton.objective();
   const double collision_before = objective.collision_seconds();
   const PhaseTimes times_before = newton.times();
+  const LinearCounts counts_before = newton.counts();
   StepperResult result;
   auto finish = [&](StepperResult& r) -> StepperResult& {
     r.times = newton.times();
@@ -19,6 +20,8 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
     r.times.line_search -= times_before.line_search;
     r.times.other -= times_before.other;
     r.times.collision = objective.collision_seconds() - collision_before;
+    r.linear.factorizations = newton.counts().factorizations - counts_before.factorizations;
+    r.linear.linear_iterations = newton.counts().linear_iterations - counts_before.linear_iterations;
     if (r.steps == 0) r.min_step = 0;
     r.last_velocity = scheme.velocity();
     return r;

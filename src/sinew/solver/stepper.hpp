@@ -56,6 +56,7 @@ struct StepperResult {
   int snap_throughs = 0;        ///< steps solved with the snap-through budget
   double min_step = 0, max_step = 0;  ///< of the accepted steps (t units)
   PhaseTimes times;
+  LinearCounts linear;          ///< factorizations and linear iterations of this run
 };
 
 struct StepperOptions {
