@@ -47,7 +47,7 @@ const std::string& scene_example_json() {
              "newton": {"max_iterations": 25, "residual_tolerance": 1e-6, "increment_tolerance": 1e-6,
                         "line_search": "energy", "max_line_search_steps": 30, "quasi_viscosity": 0, "project_hessians": false},
              "linear": {"solver": "cholmod", "tolerance": 0.1, "max_iterations": 200, "gmres_restart": 50,
-                        "lagged_iterations": 20, "lagged_tolerance": 1e-3}},
+                        "lagged_iterations": 0, "lagged_tolerance": 1e-3}},
   "output": {"vtu": true, "every": 1}
 }
 )json";

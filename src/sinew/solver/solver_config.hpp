@@ -15,8 +15,9 @@ struct LinearSolverOptions {
   int gmres_restart = 50;
   /// CHOLMOD only: conjugate-gradient iterations, preconditioned by the last Cholesky
   /// factorization, tried on a new matrix before it is factorized itself (0: factorize every
-  /// matrix). A factorization that still converges CG within this many iterations is kept.
-  int lagged_iterations = 20;
+  /// matrix, the default: docs/solver.md says why). A factorization that still converges CG within
+  /// this many iterations is kept.
+  int lagged_iterations = 0;
   /// Relative residual |K x - b| / |b| at which that lagged CG stops.
   double lagged_tolerance = 1e-3;
 };
