@@ -21,6 +21,13 @@ RunOutput::RunOutput(std::string directory, model::Model& model, const scene::Ou
                                             "contact_energy", "total_energy"}
                  : std::vector<std::string>{"step", "increment", "lambda", "step_size", "newton_iterations",
                                             "residual", "force_scale", "energy", "cuts"};
+  const auto enforcement = model.contact ? model.contact_enforcement.method : contact::ContactEnforcement::Penalty;
+  log_multiplier_updates_ = enforcement == contact::ContactEnforcement::AugmentedLagrangian;
+  log_penalties_ = enforcement == contact::ContactEnforcement::AdaptivePenalty;
+  if (log_multiplier_updates_) {
+    columns.emplace_back("multiplier_updates");
+    columns.emplace_back("max_multiplier_pressure");
+  }
   for (const auto& p : problem.prescribed) reaction_names_.push_back(p.name);
   for (const auto& p : problem.planar) reaction_names_.push_back(p.name);
   for (const auto& r : problem.rigid_bodies) reaction_names_.push_back(r.name);
@@ -43,6 +50,7 @@ RunOutput::RunOutput(std::string directory, model::Model& model, const scene::Ou
           for (const char* c : {".fx", ".fy", ".fz"}) columns.push_back(prefix + c);
         }
         columns.push_back(prefix + ".max_penetration");
+        if (log_penalties_) columns.push_back(prefix + ".penalty");
       }
   }
   steps_ = std::make_unique<io::CsvTable>(directory_ + "/steps.csv", columns);
@@ -85,10 +93,11 @@ std::optional<contact::ContactReport> RunOutput::contact_statistics(const fem::S
 
 void RunOutput::write_step(const solver::StepRecord& step, const fem::State& state) {
   const auto contact = contact_statistics(state);
-  write_row({static_cast<long long>(step.step), static_cast<long long>(step.segment), step.t, step.step_size,
-             static_cast<long long>(step.newton_iterations), step.residual, step.force_scale, step.energy,
-             static_cast<long long>(step.cuts)},
-            state, contact ? &*contact : nullptr);
+  std::vector<io::CsvTable::Cell> row{static_cast<long long>(step.step), static_cast<long long>(step.segment), step.t,
+                                      step.step_size, static_cast<long long>(step.newton_iterations), step.residual,
+                                      step.force_scale, step.energy, static_cast<long long>(step.cuts)};
+  add_multiplier_cells(step, row);
+  write_row(std::move(row), state, contact ? &*contact : nullptr);
   write_rigid_row({static_cast<long long>(step.step), static_cast<long long>(step.segment), step.t}, state,
                   true);
 }
@@ -108,10 +117,12 @@ void RunOutput::write_time_step(const solver::StepRecord& step, const fem::State
                                 const NodalVectors& velocity) {
   const auto contact = contact_statistics(state);
   const DynamicEnergies e = energies(state, velocity, contact ? &*contact : nullptr);
-  write_row({static_cast<long long>(step.step), step.t, step.step_size, static_cast<long long>(step.newton_iterations),
-             step.residual, static_cast<long long>(step.cuts), e.kinetic, e.elastic, e.gravitational, e.contact,
-             e.total()},
-            state, contact ? &*contact : nullptr, /*flush=*/false);
+  std::vector<io::CsvTable::Cell> row{static_cast<long long>(step.step), step.t, step.step_size,
+                                      static_cast<long long>(step.newton_iterations), step.residual,
+                                      static_cast<long long>(step.cuts), e.kinetic, e.elastic, e.gravitational,
+                                      e.contact, e.total()};
+  add_multiplier_cells(step, row);
+  write_row(std::move(row), state, contact ? &*contact : nullptr, /*flush=*/false);
   write_rigid_row({static_cast<long long>(step.step), step.t}, state, /*flush=*/false);
 }
 
@@ -126,6 +137,13 @@ void RunOutput::write_output(int output, double time, const fem::State& state, c
   data.point_fields.push_back({"velocity", MatrixX(velocity)});
   io::write_vtu(directory_ + "/" + name, data);
   series_->add(time, name);
+}
+
+void RunOutput::add_multiplier_cells(const solver::StepRecord& step, std::vector<io::CsvTable::Cell>& row) const {
+  if (!log_multiplier_updates_) return;
+  const VectorX& pressure = model_.contact->pressure();
+  row.emplace_back(static_cast<long long>(step.refinements));
+  row.emplace_back(pressure.size() > 0 ? pressure.maxCoeff() : 0.0);
 }
 
 void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State& state,
@@ -150,6 +168,7 @@ void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State&
         for (int k = 0; k < 3; ++k) row.emplace_back(f[k]);
       }
       row.emplace_back(c.max_penetration_between(a, b));
+      if (log_penalties_) row.emplace_back(model_.contact->geometry().penalty(a, b));
     }
   }
   if (flush) {
@@ -244,6 +263,7 @@ void RunOutput::write_summary(const solver::StepperResult& result, double wall_s
     j["newton_iterations"] = result.newton_iterations;
     j["step_cuts"] = result.cuts;
     j["snap_throughs"] = result.snap_throughs;
+    j["multiplier_updates"] = result.refinements;
   }
   finish_summary(j, wall_seconds, result.times);
 }

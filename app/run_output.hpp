@@ -8,7 +8,10 @@
 ///                          energy, reaction force and moment of every constraint; with contact:
 ///                          pairs, area, max and mean penetration, contact energy, the force on
 ///                          body a from body b per pair "contact.<a>.<b>.f{x,y,z}" and, for
-///                          self-contact, half the sum of nodal force magnitudes "contact.<a>.<a>.force")
+///                          self-contact, half the sum of nodal force magnitudes "contact.<a>.<a>.force";
+///                          with the augmented Lagrangian "multiplier_updates" and
+///                          "max_multiplier_pressure", with the adaptive penalty "contact.<a>.<b>.penalty"
+///                          (the penalty after the step, which the next step uses))
 ///   newton.csv             one row per Newton iteration
 ///   last_converged.vtu     on failure: the state the run could reach
 ///   summary.json           status ("solved", "stopped", "output_error", "out_of_memory"),
@@ -102,6 +105,11 @@ class RunOutput {
   std::unique_ptr<io::CsvTable> rigid_;
   std::unique_ptr<io::PvdSeries> series_;
   std::vector<std::string> reaction_names_;
+  /// Augmented Lagrangian: the step's multiplier updates and the largest nodal pressure
+  /// ("multiplier_updates", "max_multiplier_pressure") after the step's base columns.
+  void add_multiplier_cells(const solver::StepRecord& step, std::vector<io::CsvTable::Cell>& row) const;
+  bool log_multiplier_updates_ = false;
+  bool log_penalties_ = false;  ///< adaptive penalty: "contact.<a>.<b>.penalty" per pair
   std::vector<std::pair<Index, Index>> contact_columns_;  ///< body pairs with contact, in column order
 };
 

@@ -90,8 +90,10 @@ inline PairVector to_vector(const PairGeometry& pg) {
   return v;
 }
 
-inline PairGeometry from_vector(const Eigen::VectorXd& v, const Eigen::Vector4d& depth) {
+inline PairGeometry from_vector(const Eigen::VectorXd& v, const Eigen::Vector4d& depth,
+                                const Vector3& multiplier = Vector3::Zero()) {
   PairGeometry pg;
+  pg.multiplier = multiplier;
   for (int k = 0; k < 3; ++k) pg.triangle.row(k) = v.segment<3>(3 * k).transpose();
   for (int k = 0; k < 4; ++k) pg.tet.row(k) = v.segment<3>(9 + 3 * k).transpose();
   pg.depth = depth;
@@ -171,6 +173,25 @@ inline bool same_points(const CollocationPoints& a, const CollocationPoints& b) 
   for (int k = 0; k < a.count; ++k)
     if (a.vertex[static_cast<std::size_t>(k)] != b.vertex[static_cast<std::size_t>(k)]) return false;
   return true;
+}
+
+/// True when every configuration within ±h of pg in one of the 21 variables has the same clip
+/// polygon combinatorics (area method, non-empty) or the same inside vertices (point method):
+/// there the integral is smooth and its Hessian can be compared with differences.
+inline bool combinatorics_stable(const PairGeometry& pg, bool area, double h) {
+  const PairVector x0 = to_vector(pg);
+  const ClipPolygon p0 = collision::clip_triangle_tet(pg.triangle, pg.tet);
+  const CollocationPoints c0 = collision::triangle_vertices_in_tet(pg.triangle, pg.tet);
+  bool stable = area ? p0.count >= 3 : c0.count > 0;
+  for (int i = 0; i < kPairVariables && stable; ++i)
+    for (const double s : {-h, h}) {
+      PairVector x = x0;
+      x[i] += s;
+      const PairGeometry q = from_vector(x, pg.depth);
+      stable = stable && (area ? same_combinatorics(p0, collision::clip_triangle_tet(q.triangle, q.tet))
+                               : same_points(c0, collision::triangle_vertices_in_tet(q.triangle, q.tet)));
+    }
+  return stable;
 }
 
 inline const char* method_name(bool area) { return area ? "area" : "point"; }

@@ -263,18 +263,7 @@ TEST_P(PairDerivatives, ExactHessianMatchesDifferencesOfTheGradientWhereTheCombi
     const PairGeometry pg = random_method_pair(rng, area, trial);
     const PairVector x0 = to_vector(pg);
     // Same polygon combinatorics (or the same inside vertices) at every perturbed configuration.
-    const ClipPolygon p0 = collision::clip_triangle_tet(pg.triangle, pg.tet);
-    const CollocationPoints c0 = collision::triangle_vertices_in_tet(pg.triangle, pg.tet);
-    bool stable = area ? p0.count >= 3 : c0.count > 0;
-    for (int i = 0; i < kPairVariables && stable; ++i)
-      for (const double s : {-h, h}) {
-        PairVector x = x0;
-        x[i] += s;
-        const PairGeometry q = from_vector(x, pg.depth);
-        stable = stable && (area ? same_combinatorics(p0, collision::clip_triangle_tet(q.triangle, q.tet))
-                                 : same_points(c0, collision::triangle_vertices_in_tet(q.triangle, q.tet)));
-      }
-    if (!stable) {
+    if (!combinatorics_stable(pg, area, h)) {
       ++skipped;
       continue;
     }

@@ -355,3 +355,57 @@ TEST(BuildContact, SceneErrorsNameTheEntry) {
 
 }  // namespace
 }  // namespace sinew::scene
+
+namespace sinew::scene {
+namespace {
+
+// contact.enforcement (contact_enforcement.hpp): what is read, and every inconsistent choice
+// refused with its path.
+TEST(ContactEnforcementScene, ReadsTheMethodAndTheTolerances) {
+  nlohmann::json scene = testing::minimal_scene();
+  scene["contact"] = nlohmann::json::parse(
+      R"({"enforcement": {"method": "augmented-lagrangian", "penetration_tolerance": 0.01, "max_updates": 7}})");
+  SceneConfig config = parse_scene(scene, "");
+  EXPECT_EQ(config.contact.enforcement.method, contact::ContactEnforcement::AugmentedLagrangian);
+  EXPECT_EQ(config.contact.enforcement.penetration_tolerance, 0.01);
+  EXPECT_EQ(config.contact.enforcement.max_updates, 7);
+  EXPECT_FALSE(config.contact.relative_penetration_tolerance);
+  scene["contact"] = nlohmann::json::parse(
+      R"({"enforcement": {"method": "adaptive-penalty", "relative_tolerance": 0.002, "max_growth": 4}})");
+  config = parse_scene(scene, "");
+  EXPECT_EQ(config.contact.enforcement.method, contact::ContactEnforcement::AdaptivePenalty);
+  EXPECT_EQ(config.contact.relative_penetration_tolerance.value_or(0), 0.002);
+  EXPECT_EQ(config.contact.enforcement.max_growth, 4);
+  scene["contact"] = nlohmann::json::object();
+  EXPECT_EQ(parse_scene(scene, "").contact.enforcement.method, contact::ContactEnforcement::Penalty);
+}
+
+TEST(ContactEnforcementScene, InconsistentChoicesAreRefusedWithTheirPath) {
+  using ::testing::HasSubstr;
+  nlohmann::json scene = testing::minimal_scene();
+  scene["contact"] = nlohmann::json::parse(R"({"enforcement": {"method": "augmented-lagrangian"}})");
+  EXPECT_THAT(testing::parse_error(scene, ""),
+              HasSubstr("contact.enforcement: \"augmented-lagrangian\" needs a tolerance: penetration_tolerance"));
+  scene["contact"] = nlohmann::json::parse(
+      R"({"enforcement": {"method": "adaptive-penalty", "penetration_tolerance": 0.1, "relative_tolerance": 0.1}})");
+  EXPECT_THAT(testing::parse_error(scene, ""),
+              HasSubstr("contact.enforcement.relative_tolerance: give penetration_tolerance or relative_tolerance, not both"));
+  scene["contact"] = nlohmann::json::parse(R"({"enforcement": {"method": "lagrange", "penetration_tolerance": 0.1}})");
+  EXPECT_THAT(testing::parse_error(scene, ""), HasSubstr("contact.enforcement.method"));
+  scene["contact"] = nlohmann::json::parse(R"({"enforcement": {"penetration_tolerance": -1}})");
+  EXPECT_THAT(testing::parse_error(scene, ""), HasSubstr("contact.enforcement.penetration_tolerance"));
+  scene["contact"] = nlohmann::json::parse(
+      R"({"enforcement": {"method": "augmented-lagrangian", "penetration_tolerance": 0.1, "max_updates": 0}})");
+  EXPECT_THAT(testing::parse_error(scene, ""), HasSubstr("contact.enforcement.max_updates"));
+  scene["contact"] = nlohmann::json::parse(
+      R"({"enforcement": {"method": "adaptive-penalty", "penetration_tolerance": 0.1, "max_growth": 1}})");
+  EXPECT_THAT(testing::parse_error(scene, ""), HasSubstr("contact.enforcement.max_growth"));
+  scene["contact"] = nlohmann::json::parse(
+      R"({"enforcement": {"method": "augmented-lagrangian", "penetration_tolerance": 0.1}})");
+  scene["dynamics"] = nlohmann::json::parse(R"({"integrator": "explicit", "end_time": 1, "output_interval": 0.5})");
+  EXPECT_THAT(testing::parse_error(scene, ""),
+              HasSubstr("contact.enforcement.method: explicit integration keeps the penalty it started with"));
+}
+
+}  // namespace
+}  // namespace sinew::scene

@@ -1,6 +1,7 @@
 #include "sinew/contact/collision_set.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <stdexcept>
 
@@ -9,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "sinew/collision/broad_phase.hpp"
+#include "sinew/core/error.hpp"
 
 namespace sinew::contact {
 namespace {
@@ -150,6 +152,34 @@ void CollisionSet::append_pattern(std::vector<std::pair<Index, Index>>& blocks) 
   blocks.reserve(blocks.size() + pattern_.size());
   for (const std::uint64_t k : pattern_)
     blocks.emplace_back(static_cast<Index>(k >> 32), static_cast<Index>(k & 0xffffffffu));
+}
+
+void CollisionSet::set_penalty(const MatrixX& penalty) {
+  const MatrixX& old = geometry_->penalty;
+  if (penalty.rows() != old.rows() || penalty.cols() != old.cols())
+    throw InputError(fmt::format("contact penalty: a {}x{} matrix for {} bodies", penalty.rows(), penalty.cols(),
+                                 old.rows()));
+  for (Index a = 0; a < old.rows(); ++a)
+    for (Index b = 0; b < old.cols(); ++b) {
+      const double e = penalty(a, b);
+      if (!std::isfinite(e) || (old(a, b) > 0) != (e > 0) || e != penalty(b, a))
+        throw InputError(fmt::format("contact penalty of bodies {} and {}: {} where it was {} (a penalty may only "
+                                     "change between positive values and must stay symmetric)",
+                                     a, b, e, old(a, b)));
+    }
+  auto geometry = std::make_shared<ContactGeometry>(*geometry_);
+  geometry->penalty = penalty;
+  geometry_ = std::move(geometry);
+  for (ActivePair& p : active_) p.penalty = pair_penalty(*geometry_, p.triangle, p.tet);
+}
+
+void CollisionSet::set_pressure(VectorX pressure) {
+  if (pressure.size() != 0 && pressure.size() != geometry_->depth.size())
+    throw InputError(fmt::format("contact pressure: {} values for {} nodes", pressure.size(), geometry_->depth.size()));
+  for (Index i = 0; i < pressure.size(); ++i)
+    if (!std::isfinite(pressure[i]) || pressure[i] < 0)
+      throw InputError(fmt::format("contact pressure at node {}: {} (must be finite and >= 0)", i, pressure[i]));
+  pressure_ = std::move(pressure);
 }
 
 }  // namespace sinew::contact

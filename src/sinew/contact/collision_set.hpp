@@ -94,10 +94,25 @@ class CollisionSet {
   const PairIntegrator& integrator() const { return *integrator_; }
   /// The 7 global nodes of pair p (triangle's 3, then tet's 4).
   std::array<Index, 7> nodes(const ActivePair& p) const { return pair_nodes(*geometry_, p.triangle, p.tet); }
-  /// The geometry of pair p at positions x (#V x 3).
+  /// The geometry of pair p at positions x (#V x 3), with the multipliers q = p / ε of its
+  /// triangle's vertices when the set has contact pressures.
   PairGeometry pair_geometry_at(const Positions& x, const ActivePair& p) const {
-    return pair_geometry(*geometry_, x, p.triangle, p.tet);
+    PairGeometry pg = pair_geometry(*geometry_, x, p.triangle, p.tet);
+    if (pressure_.size() > 0 && p.penalty > 0)
+      for (int k = 0; k < 3; ++k) pg.multiplier[k] = pressure_[geometry_->surface(p.triangle, k)] / p.penalty;
+    return pg;
   }
+
+  /// Replaces the body-pair penalties (#B x #B, symmetric; an entry may change only between
+  /// positive values, so the pairs that take part stay the same) and the penalties of the
+  /// current pairs. Throws InputError for a matrix of the wrong size, a non-finite or
+  /// non-positive entry where the geometry has a positive one, or a positive one where it has 0.
+  void set_penalty(const MatrixX& penalty);
+  /// The augmented Lagrangian contact pressure per node (#V, force / L², >= 0), interpolated
+  /// linearly over each surface triangle; 0 rows = none (pure penalty). Throws InputError for
+  /// a wrong size or a negative or non-finite entry.
+  void set_pressure(VectorX pressure);
+  const VectorX& pressure() const { return pressure_; }
 
  private:
   void check_size(const Positions& x, const char* caller) const;
@@ -122,6 +137,7 @@ class CollisionSet {
   /// (triangle, tet) keys of every pair whose blocks are in pattern_.
   std::unordered_set<std::uint64_t> pairs_in_pattern_;
   std::uint64_t revision_ = 0;
+  VectorX pressure_;  ///< #V augmented Lagrangian pressures, or empty
 };
 
 }  // namespace sinew::contact

@@ -53,6 +53,14 @@ class ContactEnergy final : public Energy {
   void begin_step(const Positions& x) override;
   std::uint64_t pattern_revision() const override { return collisions_.pattern_revision(); }
 
+  /// Replaces the body-pair penalties (CollisionSet::set_penalty): the energy changes, the
+  /// pairs and the Hessian pattern do not.
+  void set_penalty(const MatrixX& penalty) { collisions_.set_penalty(penalty); }
+  /// Sets the augmented Lagrangian nodal pressures (#V, force / L², or 0 rows for none;
+  /// CollisionSet::set_pressure): each pair's energy gains ∫ p g da.
+  void set_pressure(VectorX pressure) { collisions_.set_pressure(std::move(pressure)); }
+  const VectorX& pressure() const { return collisions_.pressure(); }
+
   /// The collision set at the last update() (pairs, pattern, times).
   const CollisionSet& collisions() const { return collisions_; }
   /// The active (triangle, tet) pairs at the last update(), in the broad phase's order.

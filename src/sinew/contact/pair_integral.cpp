@@ -115,14 +115,31 @@ DepthField<S> depth_field(const Nodes<S>& n, const Eigen::Vector4d& depth) {
 template <class S>
 struct Fan {
   int count = 0;
+  bool has_multiplier = false;  ///< q is not zero at some triangle vertex
   std::array<S, collision::kMaxClipVertices> g;
   std::array<S, collision::kMaxClipVertices> area;  ///< area[j], j = 1 .. count-2
+  std::array<Vec<S>, collision::kMaxClipVertices> shape;  ///< (N0, N1, N2) of the triangle at each vertex
+  std::array<S, collision::kMaxClipVertices> q;     ///< multiplier q at each vertex (when has_multiplier)
 };
 
+/// The triangle's linear shape functions (N0, N1, N2) at a point y of its plane.
 template <class S>
-Fan<S> make_fan(const Nodes<S>& n, const Eigen::Vector4d& depth, const collision::ClipPolygon& polygon) {
+Vec<S> triangle_shape(const Nodes<S>& n, const Vec<S>& normal, const S& inv_normal_sq, const Vec<S>& y) {
+  const Vec<S> ya = y - n.tri[0];
+  const S n1 = dot(cross(ya, n.tri[2] - n.tri[0]), normal) * inv_normal_sq;
+  const S n2 = dot(cross(n.tri[1] - n.tri[0], ya), normal) * inv_normal_sq;
+  return {S(1.0) - n1 - n2, n1, n2};
+}
+
+/// The fan of the polygon: depths, areas and, when `shape_functions` or the pair has
+/// multipliers, the triangle's shape functions at the polygon's vertices (and q there).
+template <class S>
+Fan<S> make_fan(const Nodes<S>& n, const PairGeometry& pair, const collision::ClipPolygon& polygon,
+                bool shape_functions = false) {
+  const Eigen::Vector4d& depth = pair.depth;
   Fan<S> fan;
   fan.count = polygon.count;
+  fan.has_multiplier = pair.multiplier.cwiseAbs().maxCoeff() > 0;
   if (polygon.count < 3) return fan;
   const DepthField<S> field = depth_field(n, depth);
   std::array<Vec<S>, collision::kMaxClipVertices> p;
@@ -136,7 +153,24 @@ Fan<S> make_fan(const Nodes<S>& n, const Eigen::Vector4d& depth, const collision
     const auto J = static_cast<std::size_t>(j);
     fan.area[J] = dot(normal, cross(p[J] - p[0], p[J + 1] - p[0])) * half_inv_length;
   }
+  if (fan.has_multiplier || shape_functions) {
+    const S inv_normal_sq = S(1.0) / dot(normal, normal);
+    for (int k = 0; k < polygon.count; ++k) {
+      const auto K = static_cast<std::size_t>(k);
+      const Vec<S> N = triangle_shape(n, normal, inv_normal_sq, p[K]);
+      fan.shape[K] = N;
+      fan.q[K] = N.x * S(pair.multiplier[0]) + N.y * S(pair.multiplier[1]) + N.z * S(pair.multiplier[2]);
+    }
+  }
   return fan;
+}
+
+/// ∫ over a triangle of the product of affine f and h with vertex values (a, b, c) and (u, v, w):
+/// A/12 (a u + b v + c w + (a+b+c)(u+v+w)).
+template <class S>
+S triangle_product_integral(const S& area, const S& a, const S& b, const S& c, const S& u, const S& v,
+                            const S& w) {
+  return area * (a * u + b * v + c * w + (a + b + c) * (u + v + w)) * (1.0 / 12.0);
 }
 
 /// ∫ over a triangle of an affine f with vertex values a, b, c: A/12 (a² + b² + c² + (a+b+c)²).
@@ -146,12 +180,16 @@ S triangle_square_integral(const S& area, const S& a, const S& b, const S& c) {
   return area * (a * a + b * b + c * c + sum * sum) * (1.0 / 12.0);
 }
 
+/// ∫ (g² + 2 q g) da over the fan.
 template <class S>
 S fan_integral(const Fan<S>& fan) {
   S total(0.0);
   for (int j = 1; j + 1 < fan.count; ++j) {
     const auto J = static_cast<std::size_t>(j);
     total += triangle_square_integral(fan.area[J], fan.g[0], fan.g[J], fan.g[J + 1]);
+    if (fan.has_multiplier)
+      total += triangle_product_integral(fan.area[J], fan.g[0], fan.g[J], fan.g[J + 1], fan.q[0], fan.q[J],
+                                         fan.q[J + 1]) * 2.0;
   }
   return total;
 }
@@ -159,7 +197,7 @@ S fan_integral(const Fan<S>& fan) {
 template <class S>
 S area_integral_t(const PairGeometry& pair, const collision::ClipPolygon& polygon) {
   if (polygon.count < 3) return S(0.0);
-  return fan_integral(make_fan(make_nodes<S>(pair), pair.depth, polygon));
+  return fan_integral(make_fan(make_nodes<S>(pair), pair, polygon));
 }
 
 template <class S>
@@ -171,8 +209,9 @@ S point_integral_t(const PairGeometry& pair, const collision::CollocationPoints&
   const S weight = sqrt(dot(normal, normal)) * (0.5 / 3.0);
   S total(0.0);
   for (int k = 0; k < points.count; ++k) {
-    const S g = field.at(n.tri[static_cast<std::size_t>(points.vertex[static_cast<std::size_t>(k)])]);
-    total += weight * g * g;
+    const int v = points.vertex[static_cast<std::size_t>(k)];
+    const S g = field.at(n.tri[static_cast<std::size_t>(v)]);
+    total += weight * g * (g + S(2.0 * pair.multiplier[v]));
   }
   return total;
 }
@@ -241,7 +280,9 @@ double area_integral_hessian(const PairGeometry& pair, const collision::ClipPoly
   hessian.setZero();
   gradient.setZero();
   if (polygon.count < 3) return 0;
-  const Fan<D1> fan = make_fan(make_nodes<D1>(pair), pair.depth, polygon);
+  // The multiplier term 2 q g contributes to the gradient (through fan_integral) but not to
+  // this Hessian: Gauss-Newton keeps the positive part.
+  const Fan<D1> fan = make_fan(make_nodes<D1>(pair), pair, polygon);
   const D1 I = fan_integral(fan);
   gradient = I.d;
   // Σ_j w_j (∇a∇aᵀ + ∇b∇bᵀ + ∇c∇cᵀ + ∇s∇sᵀ) = Gᵀ C G, G the count x 21 depth gradients at the
@@ -267,12 +308,20 @@ double area_integral_hessian(const PairGeometry& pair, const collision::ClipPoly
 PolygonMoments area_moments(const PairGeometry& pair, const collision::ClipPolygon& polygon) {
   PolygonMoments m;
   if (polygon.count < 3 || degenerate_triangle(pair)) return m;
-  const Fan<double> fan = make_fan(make_nodes<double>(pair), pair.depth, polygon);
+  const Fan<double> fan = make_fan(make_nodes<double>(pair), pair, polygon, /*shape_functions=*/true);
   for (int k = 0; k < fan.count; ++k) m.max_depth = std::max(m.max_depth, fan.g[static_cast<std::size_t>(k)]);
   for (int j = 1; j + 1 < fan.count; ++j) {
     const auto J = static_cast<std::size_t>(j);
     m.area += fan.area[J];
     m.depth_integral += fan.area[J] * (fan.g[0] + fan.g[J] + fan.g[J + 1]) / 3.0;
+    const std::array<const Vec<double>*, 3> N{&fan.shape[0], &fan.shape[J], &fan.shape[J + 1]};
+    const double ga = fan.g[0], gb = fan.g[J], gc = fan.g[J + 1];
+    const double shape[3][3] = {{N[0]->x, N[1]->x, N[2]->x}, {N[0]->y, N[1]->y, N[2]->y}, {N[0]->z, N[1]->z, N[2]->z}};
+    for (int v = 0; v < 3; ++v) {
+      const double* s = shape[v];
+      m.vertex_area[v] += fan.area[J] * (s[0] + s[1] + s[2]) / 3.0;
+      m.vertex_depth_integral[v] += triangle_product_integral(fan.area[J], s[0], s[1], s[2], ga, gb, gc);
+    }
   }
   return m;
 }
@@ -312,8 +361,9 @@ double point_integral_hessian(const PairGeometry& pair, const collision::Colloca
   const D1 weight = sqrt(dot(normal, normal)) * (0.5 / 3.0);
   D1 total(0.0);
   for (int k = 0; k < points.count; ++k) {
-    const D1 g = field.at(n.tri[static_cast<std::size_t>(points.vertex[static_cast<std::size_t>(k)])]);
-    total += weight * g * g;
+    const int v = points.vertex[static_cast<std::size_t>(k)];
+    const D1 g = field.at(n.tri[static_cast<std::size_t>(v)]);
+    total += weight * g * (g + D1(2.0 * pair.multiplier[v]));
     hessian.noalias() += (2.0 * weight.v) * g.d * g.d.transpose();
   }
   gradient = total.d;
@@ -328,10 +378,13 @@ PolygonMoments point_moments(const PairGeometry& pair, const collision::Collocat
   const Vec<double> normal = cross(n.tri[1] - n.tri[0], n.tri[2] - n.tri[0]);
   const double weight = std::sqrt(dot(normal, normal)) * (0.5 / 3.0);
   for (int k = 0; k < points.count; ++k) {
-    const double g = field.at(n.tri[static_cast<std::size_t>(points.vertex[static_cast<std::size_t>(k)])]);
+    const int v = points.vertex[static_cast<std::size_t>(k)];
+    const double g = field.at(n.tri[static_cast<std::size_t>(v)]);
     m.area += weight;
     m.depth_integral += weight * g;
     m.max_depth = std::max(m.max_depth, g);
+    m.vertex_area[v] += weight;
+    m.vertex_depth_integral[v] += weight * g;
   }
   return m;
 }

@@ -7,6 +7,11 @@
 /// with g_e the linear interpolation of the nodal material depths over the tet, all in the
 /// current configuration. The pair's energy is (ε/2) I.
 ///
+/// With augmented Lagrangian multipliers (docs/contact.md, "Augmented Lagrangian"; dissertation
+/// §10.1.2) the integrand g² becomes g² + 2 q g, q the contact pressure p interpolated linearly
+/// over the triangle from its vertices and divided by the pair's penalty (q = p / ε, a length):
+/// the pair's energy (ε/2) I is then (ε/2) ∫ g² + ∫ p g.
+///
 /// Local variables (21): the three triangle vertices, then the four tet vertices, x y z each:
 /// variable 3 k + c is coordinate c of local node k (k = 0..2 triangle, 3..6 tet vertex k - 3).
 /// The polygon's combinatorics (which edges cross which planes) comes from the clip; every
@@ -30,6 +35,9 @@ struct PairGeometry {
   Matrix3 triangle;       ///< rows: triangle vertices (L)
   TetVertices tet;        ///< rows: tet vertices (L)
   Eigen::Vector4d depth;  ///< material depth at the tet vertices (L)
+  /// q = p / ε at the triangle vertices (L): the augmented Lagrangian pressure over the pair's
+  /// penalty; zero without multipliers.
+  Vector3 multiplier = Vector3::Zero();
 };
 
 /// How the Hessian of a pair is formed.
@@ -57,11 +65,15 @@ double area_integral_gradient(const PairGeometry& pair, const collision::ClipPol
 double area_integral_hessian(const PairGeometry& pair, const collision::ClipPolygon& polygon, PairHessian kind,
                              PairVector& gradient, PairMatrix& hessian);
 
-/// Polygon statistics: area (L²), ∫ g da (L³) and the largest g on the polygon (L).
+/// Polygon statistics: area (L²), ∫ g da (L³) and the largest g on the polygon (L); and per
+/// triangle vertex k, with N_k its linear shape function on the triangle, ∫ N_k da (L²) and
+/// ∫ N_k g da (L³), which the augmented Lagrangian update of the vertex pressures uses.
 struct PolygonMoments {
   double area = 0;
   double depth_integral = 0;
   double max_depth = 0;
+  Vector3 vertex_area = Vector3::Zero();
+  Vector3 vertex_depth_integral = Vector3::Zero();
 };
 PolygonMoments area_moments(const PairGeometry& pair, const collision::ClipPolygon& polygon);
 

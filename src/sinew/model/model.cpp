@@ -157,7 +157,13 @@ Model build_model(const scene::SceneConfig& scene) {
       fem::lumped_masses(mesh.rest, mesh.tets, mesh.region, problem.region_density), problem.gravity,
       dynamic ? fem::Amplitude{{{0.0, 1.0}}} : fem::Amplitude{}, problem.forces, mesh.num_nodes());
   if (dynamic) model.dynamics = make_dynamics(scene.dynamics, problem, model.tet_material, *model.elastic);
-  if (model.contact_setup) attach_contact(model, model.contact_setup->geometry, model.contact_setup->options);
+  if (model.contact_setup) {
+    attach_contact(model, model.contact_setup->geometry, model.contact_setup->options);
+    model.contact_enforcement = scene.contact.enforcement;
+    if (scene.contact.relative_penetration_tolerance)
+      model.contact_enforcement.penetration_tolerance =
+          *scene.contact.relative_penetration_tolerance * contact::mean_surface_edge(model.contact_setup->geometry, mesh.rest);
+  }
   rebuild_objective(model);
   model.scales = newton_scales(problem, scene.solver.newton);
   if (dynamic && scene.dynamics.options.integrator == Integrator::Explicit) check_explicit_mass(model);

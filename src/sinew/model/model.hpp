@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sinew/contact/contact_enforcement.hpp"
 #include "sinew/contact/contact_energy.hpp"
 #include "sinew/fem/elastic_energy.hpp"
 #include "sinew/fem/external_force_energy.hpp"
@@ -48,6 +49,9 @@ struct Model {
   /// without a contact section.
   std::optional<scene::ContactSetup> contact_setup;
   std::unique_ptr<contact::ContactEnergy> contact;  ///< null without contact (or with penalty 0)
+  /// Penetration control of the contact term, its tolerance resolved to a length
+  /// (contact_enforcement.hpp); solve_model applies it through a ContactRefinement.
+  contact::ContactEnforcementOptions contact_enforcement;
   std::optional<Dynamics> dynamics;                 ///< none for a static analysis
   std::unique_ptr<solver::Objective> objective;     ///< Σ of the terms above, seen through the DofMap
   solver::StaticSolverOptions solver;               ///< the scene's linear solver, Newton and load stepping

@@ -120,6 +120,11 @@ class SceneReader {
         error("dynamics.output_interval", "gives " + format_number(std::ceil(outputs)) +
                                               " outputs over end_time; at most 1e+06 are allowed");
       }
+      if (config.contact.enforcement.method != contact::ContactEnforcement::Penalty &&
+          config.dynamics.options.integrator == solver::DynamicOptions::Integrator::Explicit)
+        error("contact.enforcement.method",
+              "explicit integration keeps the penalty it started with (its stable step depends on it) and does not "
+              "solve a step again: use \"implicit-euler\" or \"quasistatic\" with this method");
     }
     config.output.vtu = scene.at("output").at("vtu").get<bool>();
     config.output.every = scene.at("output").at("every").get<int>();
@@ -272,6 +277,22 @@ class SceneReader {
     return region;
   }
 
+  void read_enforcement(const json& j, ContactConfig& contact) {
+    contact::ContactEnforcementOptions& e = contact.enforcement;
+    e.method = read_name<contact::ContactEnforcement>(j, "method", "contact.enforcement", errors);
+    e.max_updates = j.at("max_updates").get<int>();
+    e.max_growth = j.at("max_growth").get<double>();
+    const bool absolute = j.contains("penetration_tolerance"), relative = j.contains("relative_tolerance");
+    if (absolute) e.penetration_tolerance = j.at("penetration_tolerance").get<double>();
+    if (relative) contact.relative_penetration_tolerance = j.at("relative_tolerance").get<double>();
+    if (absolute && relative)
+      error("contact.enforcement.relative_tolerance", "give penetration_tolerance or relative_tolerance, not both");
+    if (e.method != contact::ContactEnforcement::Penalty && !absolute && !relative)
+      error("contact.enforcement", "\"" + std::string(name_of(e.method)) +
+                                       "\" needs a tolerance: penetration_tolerance (length) or relative_tolerance "
+                                       "(fraction of the mean contact-surface edge)");
+  }
+
   ContactConfig read_contact(const json& j, const SceneConfig& config) {
     ContactConfig contact;
     contact.enabled = true;
@@ -280,6 +301,7 @@ class SceneReader {
     if (j.contains("penalty")) contact.penalty = j.at("penalty").get<double>();
     contact.penalty_scale = j.at("penalty_scale").get<double>();
     contact.self_contact = j.at("self_contact").get<bool>();
+    read_enforcement(j.at("enforcement"), contact);
     std::vector<std::string> body_names;
     for (const BodyConfig& body : config.bodies) body_names.push_back(body.name);
     std::set<std::pair<std::string, std::string>> seen;

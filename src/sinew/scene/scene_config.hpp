@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sinew/contact/contact_energy.hpp"
+#include "sinew/contact/contact_enforcement.hpp"
 #include "sinew/fem/constraints_config.hpp"
 #include "sinew/material/material_spec.hpp"
 #include "sinew/mesh/generate.hpp"
@@ -160,6 +161,12 @@ struct ContactConfig {
   double penalty_scale = 10;
   bool self_contact = true;
   std::vector<ContactPairConfig> pairs;
+  /// Penetration control beyond the plain penalty (contact_enforcement.hpp). Its
+  /// penetration_tolerance is absolute (length) when given as such; a relative tolerance is
+  /// kept in relative_penetration_tolerance and resolved against the mean contact-surface edge
+  /// when the model is built.
+  contact::ContactEnforcementOptions enforcement;
+  std::optional<double> relative_penetration_tolerance;  ///< fraction of the mean surface edge
 };
 
 /// Time integration instead of load stepping (absent: a static analysis).

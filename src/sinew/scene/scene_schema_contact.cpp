@@ -41,6 +41,32 @@ SchemaNode contact_schema() {
               .above(0)
               .fallback(defaults.penalty_scale),
           boolean("self_contact", "a body's surface may also penetrate the same body").fallback(defaults.self_contact),
+          object("enforcement",
+                 "penetration control beyond the plain penalty (docs/contact.md, \"Penetration control\"): "
+                 "\"adaptive-penalty\" grows the penalty of a pair of bodies between steps while its largest "
+                 "penetration exceeds the tolerance; \"augmented-lagrangian\" adds a nodal contact pressure "
+                 "updated after each converged Newton solve (Uzawa) and solves the step again until the largest "
+                 "penetration is below the tolerance. Give penetration_tolerance or relative_tolerance with either.",
+                 {
+                     choice("method", "\"penalty\" (as given), \"adaptive-penalty\" or \"augmented-lagrangian\"",
+                            defaults.enforcement.method),
+                     number("penetration_tolerance", "largest penetration aimed at (length)").above(0).max(kMaxLength),
+                     number("relative_tolerance",
+                            "the same as a fraction of the mean edge length of the contact surfaces")
+                         .above(0)
+                         .max(1),
+                     integer("max_updates",
+                             "augmented Lagrangian: most multiplier updates (re-solves) per step; the step is "
+                             "accepted after them even if the penetration is still above the tolerance")
+                         .min(1)
+                         .max(1000)
+                         .fallback(defaults.enforcement.max_updates),
+                     number("max_growth", "adaptive penalty: largest growth factor of a penalty per step")
+                         .above(1)
+                         .max(1e6)
+                         .fallback(defaults.enforcement.max_growth),
+                 })
+              .fallback(json::object()),
           array("pairs", "per pair of bodies: a penalty of its own, or no contact",
                 object("", "one pair of bodies (the same name twice for self-contact)",
                        {

@@ -124,7 +124,7 @@ class LoadStepping final : public StepScheme {
 }  // namespace
 
 StepperResult solve_static(Objective& objective, const StaticSolverOptions& options, const NewtonSetup& setup,
-                           const StepperCallbacks& callbacks) {
+                           const StepperCallbacks& callbacks, StepRefinement* refinement) {
   NewtonSolver newton(objective, options.linear, setup);
   LoadStepping scheme(objective, options.stepping);
   const LoadSteppingOptions& stepping = options.stepping;
@@ -144,7 +144,7 @@ StepperResult solve_static(Objective& objective, const StaticSolverOptions& opti
   o.start = StepperOptions::Start::SolveEquilibrium;
   o.growth_rule = StepperOptions::Growth::AfterEasyStep;
   o.newton = options.newton;
-  return run_stepper(newton, scheme, o, callbacks);
+  return run_stepper(newton, scheme, o, callbacks, refinement);
 }
 
 }  // namespace sinew::solver

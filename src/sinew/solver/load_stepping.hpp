@@ -12,6 +12,6 @@ namespace sinew::solver {
 /// Equilibrium at lambda = 0, then at the end of every increment, of `objective`.
 /// `setup.transient_terms` must be empty.
 StepperResult solve_static(Objective& objective, const StaticSolverOptions& options, const NewtonSetup& setup,
-                           const StepperCallbacks& callbacks = {});
+                           const StepperCallbacks& callbacks = {}, StepRefinement* refinement = nullptr);
 
 }  // namespace sinew::solver

@@ -7,7 +7,7 @@
 namespace sinew::solver {
 
 StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const StepperOptions& options,
-                          const StepperCallbacks& callbacks) {
+                          const StepperCallbacks& callbacks, StepRefinement* refinement) {
   Objective& objective = newton.objective();
   const double collision_before = objective.collision_seconds();
   const PhaseTimes times_before = newton.times();
@@ -87,9 +87,19 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
       attempt.snap_through = snap_attempt;
       if (snap_attempt)
         newton_options.max_iterations = std::max(newton_options.max_iterations, options.snap_through_iterations);
-      const NewtonResult solved = newton.solve(trial, newton_options, on_iteration);
+      NewtonResult solved = newton.solve(trial, newton_options, on_iteration);
       result.newton_iterations += solved.iterations;
+      int iterations = solved.iterations;
+      // The refinement's outer iterations: solve the step again from its converged state.
+      while (solved.converged && refinement && refinement->refine(trial)) {
+        ++attempt.refinements;
+        solved = newton.solve(trial, newton_options, on_iteration);
+        result.newton_iterations += solved.iterations;
+        iterations += solved.iterations;
+      }
       if (solved.converged) {
+        if (refinement) refinement->accept(trial);
+        result.refinements += attempt.refinements;
         failures_in_a_row = 0;
         if (snap_attempt) ++result.snap_throughs;
         scheme.accept(current, trial, h);
@@ -99,18 +109,19 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
         result.min_step = std::min(result.min_step, h);
         result.max_step = std::max(result.max_step, h);
         record = attempt;
-        record.newton_iterations = solved.iterations;
+        record.newton_iterations = iterations;
         record.residual = solved.residual;
         record.force_scale = solved.force_scale;
         record.energy = solved.energy;
         result.last_state = current;
         result.t = t;
         if (callbacks.on_step) callbacks.on_step(record, current, scheme.velocity());
-        const bool easy = solved.iterations <= options.easy_iterations;
+        const bool easy = iterations <= options.easy_iterations;
         const bool full = options.growth_rule == StepperOptions::Growth::AfterEasyStep || h >= step * (1 - 1e-12);
         if (easy && full) step = std::min(step * options.growth, options.max_step);
         continue;
       }
+      if (refinement) refinement->reject();
       ++result.cuts;
       ++failures_in_a_row;
       attempt.cuts = result.cuts;

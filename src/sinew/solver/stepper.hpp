@@ -26,6 +26,7 @@ struct StepRecord {
   double energy = 0;
   int cuts = 0;             ///< step halvings so far (whole run)
   bool snap_through = false;  ///< attempted with the snap-through Newton budget
+  int refinements = 0;      ///< re-solves of this step asked by the StepRefinement (0 without one)
 };
 
 struct StepperCallbacks {
@@ -54,6 +55,7 @@ struct StepperResult {
   int newton_iterations = 0;
   int cuts = 0;
   int snap_throughs = 0;        ///< steps solved with the snap-through budget
+  int refinements = 0;          ///< re-solves asked by the StepRefinement in accepted steps
   double min_step = 0, max_step = 0;  ///< of the accepted steps (t units)
   PhaseTimes times;
   LinearCounts linear;          ///< factorizations and linear iterations of this run
@@ -114,9 +116,26 @@ class StepScheme {
   virtual std::string solved(const StepperResult& result) const = 0;
 };
 
+/// An outer iteration around each step's Newton solve: augmented Lagrangian multiplier updates,
+/// penalty growth between steps (contact_enforcement.hpp). The stepper calls refine() with each
+/// converged state of a step; when it returns true the objective was changed and the step is
+/// solved again from that state (the refinement bounds how often). A step that then fails is cut
+/// as any other, after reject().
+class StepRefinement {
+ public:
+  virtual ~StepRefinement() = default;
+  /// `converged` solves the current step: true when the objective was changed and the step
+  /// must be solved again.
+  virtual bool refine(const fem::State& converged) = 0;
+  /// The step was accepted at `state` (changes for the next step go here).
+  virtual void accept(const fem::State& state) = 0;
+  /// The step failed: restore the objective as it was at the last accept (or the start).
+  virtual void reject() = 0;
+};
+
 /// Runs `scheme` from 0 to options.end with `newton`. Sets result.times.collision to the
 /// objective's collision time over the run.
 StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const StepperOptions& options,
-                          const StepperCallbacks& callbacks = {});
+                          const StepperCallbacks& callbacks = {}, StepRefinement* refinement = nullptr);
 
 }  // namespace sinew::solver

@@ -98,7 +98,8 @@ class ImplicitTimeStepping final : public StepScheme {
 
 StepperResult solve_dynamic(Objective& objective, const DynamicTerms& terms, const DynamicOptions& options,
                             const StaticSolverOptions& newton_options, const NewtonSetup& setup,
-                            const DynamicSetup& dynamic_setup, const StepperCallbacks& callbacks) {
+                            const DynamicSetup& dynamic_setup, const StepperCallbacks& callbacks,
+                            StepRefinement* refinement) {
   check_options(options);
   if (options.integrator == DynamicOptions::Integrator::Explicit)
     return solve_explicit(objective, terms, options, dynamic_setup, callbacks);
@@ -126,7 +127,7 @@ StepperResult solve_dynamic(Objective& objective, const DynamicTerms& terms, con
   o.start = StepperOptions::Start::GivenState;
   o.growth_rule = StepperOptions::Growth::AfterEasyFullStep;
   o.newton = newton_options.newton;
-  return run_stepper(newton, scheme, o, callbacks);
+  return run_stepper(newton, scheme, o, callbacks, refinement);
 }
 
 }  // namespace sinew::solver

@@ -33,6 +33,7 @@ struct DynamicSetup {
 /// InputError for options out of range and a missing inertia term.
 StepperResult solve_dynamic(Objective& objective, const DynamicTerms& terms, const DynamicOptions& options,
                             const StaticSolverOptions& newton_options, const NewtonSetup& setup,
-                            const DynamicSetup& dynamic_setup, const StepperCallbacks& callbacks = {});
+                            const DynamicSetup& dynamic_setup, const StepperCallbacks& callbacks = {},
+                            StepRefinement* refinement = nullptr);
 
 }  // namespace sinew::solver

@@ -1,0 +1,50 @@
+#include "sinew/model/contact_refinement.hpp"
+
+#include <stdexcept>
+
+#include "sinew/contact/contact_report.hpp"
+#include "sinew/core/log.hpp"
+
+namespace sinew::model {
+
+ContactRefinement::ContactRefinement(contact::ContactEnergy& contact, contact::ContactEnforcementOptions options)
+    : contact_(contact), options_(options) {
+  contact_.set_pressure(VectorX());  // a run starts from the plain penalty
+  if (options_.method == contact::ContactEnforcement::Penalty)
+    throw std::invalid_argument("ContactRefinement: the plain penalty needs no refinement");
+  if (!(options_.penetration_tolerance > 0))
+    throw std::invalid_argument("ContactRefinement: the penetration tolerance must be > 0");
+}
+
+bool ContactRefinement::refine(const fem::State& converged) {
+  if (options_.method != contact::ContactEnforcement::AugmentedLagrangian) return false;
+  contact_.update(converged.x);
+  last_max_penetration_ = contact::contact_report(contact_.collisions()).max_penetration;
+  if (last_max_penetration_ <= options_.penetration_tolerance || updates_ >= options_.max_updates) return false;
+  contact_.set_pressure(contact::updated_contact_pressure(contact_.collisions()));
+  ++updates_;
+  return true;
+}
+
+void ContactRefinement::accept(const fem::State& state) {
+  updates_ = 0;
+  accepted_pressure_ = contact_.pressure();
+  if (options_.method != contact::ContactEnforcement::AdaptivePenalty) return;
+  const contact::ContactReport report = contact::contact_report(contact_, state.x);
+  last_max_penetration_ = report.max_penetration;
+  const MatrixX& penalty = contact_.geometry().penalty;
+  const MatrixX grown =
+      contact::grown_penalty(penalty, report, options_.penetration_tolerance, options_.max_growth);
+  if (grown != penalty) {
+    logger().info("contact: penetration {:.3g} above the tolerance {:.3g}: penalty grown (largest {:.3g} -> {:.3g})",
+              report.max_penetration, options_.penetration_tolerance, penalty.maxCoeff(), grown.maxCoeff());
+    contact_.set_penalty(grown);
+  }
+}
+
+void ContactRefinement::reject() {
+  updates_ = 0;
+  contact_.set_pressure(accepted_pressure_);
+}
+
+}  // namespace sinew::model
