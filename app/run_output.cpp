@@ -51,6 +51,8 @@ RunOutput::RunOutput(std::string directory, model::Model& model, const scene::Ou
         }
         columns.push_back(prefix + ".max_penetration");
         if (log_penalties_) columns.push_back(prefix + ".penalty");
+        if (model.friction && a != b)
+          for (const char* c : {".friction_fx", ".friction_fy", ".friction_fz"}) columns.push_back(prefix + c);
       }
   }
   steps_ = std::make_unique<io::CsvTable>(directory_ + "/steps.csv", columns);
@@ -160,6 +162,9 @@ void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State&
     row.emplace_back(c.max_penetration);
     row.emplace_back(c.mean_penetration);
     if (!model_.is_dynamic()) row.emplace_back(c.energy);
+    const std::vector<Vector3> friction =
+        model_.friction ? model_.friction->body_pair_forces(state.x) : std::vector<Vector3>{};
+    const Index bodies = model_.contact->num_bodies();
     for (const auto& [a, b] : contact_columns_) {
       if (a == b) {
         row.emplace_back(c.self_contact_force_magnitude[a]);
@@ -169,6 +174,8 @@ void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State&
       }
       row.emplace_back(c.max_penetration_between(a, b));
       if (log_penalties_) row.emplace_back(model_.contact->geometry().penalty(a, b));
+      if (model_.friction && a != b)
+        for (int k = 0; k < 3; ++k) row.emplace_back(friction[static_cast<std::size_t>(a * bodies + b)][k]);
     }
   }
   if (flush) {
@@ -210,6 +217,12 @@ io::VtuData RunOutput::vtu_data(const fem::State& state) const {
     data.point_fields.push_back({"material_depth", MatrixX(model_.contact->geometry().depth)});
     data.point_fields.push_back({"contact_force", MatrixX(c.nodal_force)});
     data.point_fields.push_back({"contact_pressure", MatrixX(c.nodal_pressure)});
+    if (model_.friction) {
+      NodalVectors gradient = NodalVectors::Zero(state.x.rows(), 3);
+      model_.friction->add_gradient(state.x, gradient);
+      data.point_fields.push_back({"friction_force", MatrixX(-gradient)});
+      data.point_fields.push_back({"friction_slip", MatrixX(model_.friction->slip_ratio(state.x))});
+    }
   }
   return data;
 }

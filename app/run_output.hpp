@@ -11,7 +11,10 @@
 ///                          self-contact, half the sum of nodal force magnitudes "contact.<a>.<a>.force";
 ///                          with the augmented Lagrangian "multiplier_updates" and
 ///                          "max_multiplier_pressure", with the adaptive penalty "contact.<a>.<b>.penalty"
-///                          (the penalty after the step, which the next step uses))
+///                          (the penalty after the step, which the next step uses); with friction
+///                          "contact.<a>.<b>.friction_f{x,y,z}", the friction force on a from b)
+///                          and, in the VTU files, friction_force and friction_slip (|slip| / slip
+///                          threshold over the step: >= 1 sliding, < 1 sticking) per node
 ///   newton.csv             one row per Newton iteration
 ///   last_converged.vtu     on failure: the state the run could reach
 ///   summary.json           status ("solved", "stopped", "output_error", "out_of_memory"),

@@ -377,7 +377,18 @@ TEST(ContactEnforcementScene, ReadsTheMethodAndTheTolerances) {
   EXPECT_EQ(config.contact.relative_penetration_tolerance.value_or(0), 0.002);
   EXPECT_EQ(config.contact.enforcement.max_growth, 4);
   scene["contact"] = nlohmann::json::object();
-  EXPECT_EQ(parse_scene(scene, "").contact.enforcement.method, contact::ContactEnforcement::Penalty);
+  config = parse_scene(scene, "");
+  EXPECT_EQ(config.contact.enforcement.method, contact::ContactEnforcement::Penalty);
+  EXPECT_EQ(config.contact.friction.coefficient, 0.0);
+  scene["contact"] = nlohmann::json::parse(
+      R"({"friction": {"coefficient": 0.3, "slip_threshold": 0.01, "max_updates": 2},
+          "pairs": [{"bodies": ["cube", "cube"], "friction": 0.5}]})");
+  config = parse_scene(scene, "");
+  EXPECT_EQ(config.contact.friction.coefficient, 0.3);
+  EXPECT_EQ(config.contact.friction.slip_threshold.value_or(0), 0.01);
+  EXPECT_EQ(config.contact.friction.max_updates, 2);
+  ASSERT_EQ(config.contact.pairs.size(), 1u);
+  EXPECT_EQ(config.contact.pairs[0].friction.value_or(0), 0.5);
 }
 
 TEST(ContactEnforcementScene, InconsistentChoicesAreRefusedWithTheirPath) {
@@ -400,6 +411,18 @@ TEST(ContactEnforcementScene, InconsistentChoicesAreRefusedWithTheirPath) {
   scene["contact"] = nlohmann::json::parse(
       R"({"enforcement": {"method": "adaptive-penalty", "penetration_tolerance": 0.1, "max_growth": 1}})");
   EXPECT_THAT(testing::parse_error(scene, ""), HasSubstr("contact.enforcement.max_growth"));
+  scene["contact"] = nlohmann::json::parse(R"({"friction": {"coefficient": 0.3}})");
+  scene["dynamics"] = nlohmann::json::parse(R"({"integrator": "explicit", "end_time": 1, "output_interval": 0.5})");
+  EXPECT_THAT(testing::parse_error(scene, ""), HasSubstr("contact.friction: friction needs an implicit solve"));
+  scene["contact"] = nlohmann::json::parse(R"({"friction": {"coefficient": -0.3, "slip_threshold": 0}})");
+  const std::string bad_friction = testing::parse_error(scene, "");
+  EXPECT_THAT(bad_friction, HasSubstr("contact.friction.coefficient"));
+  EXPECT_THAT(bad_friction, HasSubstr("contact.friction.slip_threshold"));
+  scene.erase("dynamics");
+  scene["contact"] = nlohmann::json::parse(
+      R"({"pairs": [{"bodies": ["cube", "cube"], "enabled": false, "friction": 0.2}]})");
+  EXPECT_THAT(testing::parse_error(scene, ""),
+              HasSubstr("contact.pairs[0].friction: a disabled pair has no friction"));
   scene["contact"] = nlohmann::json::parse(
       R"({"enforcement": {"method": "augmented-lagrangian", "penetration_tolerance": 0.1}})");
   scene["dynamics"] = nlohmann::json::parse(R"({"integrator": "explicit", "end_time": 1, "output_interval": 0.5})");

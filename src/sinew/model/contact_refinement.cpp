@@ -7,27 +7,41 @@
 
 namespace sinew::model {
 
-ContactRefinement::ContactRefinement(contact::ContactEnergy& contact, contact::ContactEnforcementOptions options)
-    : contact_(contact), options_(options) {
+ContactRefinement::ContactRefinement(contact::ContactEnergy& contact, contact::ContactEnforcementOptions options,
+                                     contact::FrictionEnergy* friction, FrictionRefresh refresh)
+    : contact_(contact), options_(options), friction_(friction), refresh_(refresh) {
   contact_.set_pressure(VectorX());  // a run starts from the plain penalty
-  if (options_.method == contact::ContactEnforcement::Penalty)
-    throw std::invalid_argument("ContactRefinement: the plain penalty needs no refinement");
-  if (!(options_.penetration_tolerance > 0))
+  const bool penalty = options_.method == contact::ContactEnforcement::Penalty;
+  if (penalty && !friction_) throw std::invalid_argument("ContactRefinement: the plain penalty needs no refinement");
+  if (!penalty && !(options_.penetration_tolerance > 0))
     throw std::invalid_argument("ContactRefinement: the penetration tolerance must be > 0");
 }
 
 bool ContactRefinement::refine(const fem::State& converged) {
-  if (options_.method != contact::ContactEnforcement::AugmentedLagrangian) return false;
-  contact_.update(converged.x);
-  last_max_penetration_ = contact::contact_report(contact_.collisions()).max_penetration;
-  if (last_max_penetration_ <= options_.penetration_tolerance || updates_ >= options_.max_updates) return false;
-  contact_.set_pressure(contact::updated_contact_pressure(contact_.collisions()));
-  ++updates_;
-  return true;
+  bool again = false;
+  if (options_.method == contact::ContactEnforcement::AugmentedLagrangian) {
+    contact_.update(converged.x);
+    last_max_penetration_ = contact::contact_report(contact_.collisions()).max_penetration;
+    if (last_max_penetration_ > options_.penetration_tolerance && updates_ < options_.max_updates) {
+      contact_.set_pressure(contact::updated_contact_pressure(contact_.collisions()));
+      ++updates_;
+      again = true;
+    }
+  }
+  if (friction_ && friction_updates_ < refresh_.max_updates) {
+    // Lagged at the converged state (with the new pressures): solve again if the normal forces moved.
+    const double change = friction_->refresh(converged.x);
+    if (change > refresh_.tolerance) {
+      ++friction_updates_;
+      again = true;
+    }
+  }
+  return again;
 }
 
 void ContactRefinement::accept(const fem::State& state) {
   updates_ = 0;
+  friction_updates_ = 0;
   accepted_pressure_ = contact_.pressure();
   if (options_.method != contact::ContactEnforcement::AdaptivePenalty) return;
   const contact::ContactReport report = contact::contact_report(contact_, state.x);
@@ -44,6 +58,7 @@ void ContactRefinement::accept(const fem::State& state) {
 
 void ContactRefinement::reject() {
   updates_ = 0;
+  friction_updates_ = 0;
   contact_.set_pressure(accepted_pressure_);
 }
 

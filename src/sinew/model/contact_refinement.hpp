@@ -1,25 +1,36 @@
 #pragma once
 /// @file contact_refinement.hpp
-/// The stepper's outer iteration for contact penetration control (contact_enforcement.hpp,
-/// docs/contact.md "Penetration control"): augmented Lagrangian multiplier updates within a
-/// step, or penalty growth between steps.
+/// The stepper's outer iteration for contact (docs/contact.md, "Penetration control" and
+/// "Friction"): augmented Lagrangian multiplier updates within a step, penalty growth between
+/// steps, and the refresh of friction's lagged normal forces after each converged solve.
 
 #include "sinew/contact/contact_energy.hpp"
 #include "sinew/contact/contact_enforcement.hpp"
+#include "sinew/contact/friction.hpp"
 #include "sinew/solver/stepper.hpp"
 
 namespace sinew::model {
 
+/// How often friction's lag is refreshed within a step.
+struct FrictionRefresh {
+  int max_updates = 5;      ///< refreshes per step that may ask for a re-solve
+  double tolerance = 0.01;  ///< relative change of the total normal force that asks for one
+};
+
 class ContactRefinement final : public solver::StepRefinement {
  public:
-  /// `contact` must outlive the refinement; options.method must not be Penalty and its
-  /// penetration_tolerance must be > 0 (std::invalid_argument otherwise). Clears the contact's
-  /// pressures (a run starts from the plain penalty); penalties grown by an earlier run stay.
-  ContactRefinement(contact::ContactEnergy& contact, contact::ContactEnforcementOptions options);
+  /// `contact` (and `friction`, when not null) must outlive the refinement. Unless there is
+  /// friction, options.method must not be Penalty; a method other than Penalty needs
+  /// penetration_tolerance > 0 (std::invalid_argument otherwise). Clears the contact's pressures
+  /// (a run starts from the plain penalty); penalties grown by an earlier run stay.
+  ContactRefinement(contact::ContactEnergy& contact, contact::ContactEnforcementOptions options,
+                    contact::FrictionEnergy* friction = nullptr, FrictionRefresh refresh = {});
 
   /// Augmented Lagrangian: when the largest penetration at `converged` exceeds the tolerance
-  /// and the step has had fewer than max_updates updates, updates the nodal pressures and
-  /// returns true. Adaptive penalty: false.
+  /// and the step has had fewer than max_updates updates, updates the nodal pressures. Friction:
+  /// lags the normal forces and tangents again at `converged`. True when either changed enough
+  /// to solve the step again (the pressures were updated, or the total normal force changed by
+  /// more than the refresh tolerance and the step has had fewer than max_updates refreshes).
   bool refine(const fem::State& converged) override;
   /// Keeps the pressures for the next step; adaptive penalty: grows the penalties of the body
   /// pairs that penetrate more than the tolerance at `state`.
@@ -33,7 +44,10 @@ class ContactRefinement final : public solver::StepRefinement {
  private:
   contact::ContactEnergy& contact_;
   contact::ContactEnforcementOptions options_;
-  int updates_ = 0;  ///< multiplier updates in the current step
+  contact::FrictionEnergy* friction_;
+  FrictionRefresh refresh_;
+  int updates_ = 0;           ///< multiplier updates in the current step
+  int friction_updates_ = 0;  ///< friction refreshes that asked for a re-solve in the current step
   VectorX accepted_pressure_;
   double last_max_penetration_ = 0;
 };

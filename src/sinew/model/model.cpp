@@ -1,5 +1,6 @@
 #include "sinew/model/model.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -95,6 +96,7 @@ void check_explicit_mass(const Model& model) {
 void rebuild_objective(Model& model) {
   std::vector<Energy*> terms{model.elastic.get(), model.external.get()};
   if (model.contact) terms.push_back(model.contact.get());
+  if (model.friction) terms.push_back(model.friction.get());
   if (model.dynamics) {
     if (model.dynamics->inertia) terms.push_back(model.dynamics->inertia.get());
     if (model.dynamics->viscosity) terms.push_back(model.dynamics->viscosity.get());
@@ -102,9 +104,27 @@ void rebuild_objective(Model& model) {
   model.objective = std::make_unique<solver::Objective>(*model.dofs, std::move(terms), model.problem->mesh.num_nodes());
 }
 
-/// Contact energy from `geometry`; explicit integration's critical step follows its springs.
+/// The friction coefficient of every pair of contact bodies: the pair's own or the scene's.
+MatrixX friction_coefficients(const scene::ContactConfig& config, const std::vector<std::string>& body_names) {
+  const auto bodies = static_cast<Index>(body_names.size());
+  MatrixX mu = MatrixX::Constant(bodies, bodies, config.friction.coefficient);
+  auto id = [&](const std::string& name) {
+    return static_cast<Index>(std::find(body_names.begin(), body_names.end(), name) - body_names.begin());
+  };
+  for (const scene::ContactPairConfig& pair : config.pairs) {
+    if (!pair.friction) continue;
+    const Index a = id(pair.body_a), b = id(pair.body_b);
+    if (a < bodies && b < bodies) mu(a, b) = mu(b, a) = *pair.friction;
+  }
+  return mu;
+}
+
+/// Contact energy from `geometry` (and the friction term on it, when the model has friction);
+/// explicit integration's critical step follows its springs.
 void attach_contact(Model& model, contact::ContactGeometry geometry, const contact::ContactOptions& options) {
+  model.friction.reset();
   model.contact = std::make_unique<contact::ContactEnergy>(std::move(geometry), options);
+  if (model.friction_options) model.friction = std::make_unique<contact::FrictionEnergy>(*model.contact, *model.friction_options);
   if (model.dynamics && model.dynamics->options.integrator == Integrator::Explicit) {
     // The penalty springs of contact are stiffer than the elements when h is small.
     const auto& mesh = model.problem->mesh;
@@ -121,6 +141,7 @@ void attach_contact(Model& model, contact::ContactGeometry geometry, const conta
 }
 
 void detach_contact(Model& model) {
+  model.friction.reset();
   model.contact.reset();
   if (model.dynamics) {
     model.dynamics->contact_critical_time_step = 0;
@@ -158,6 +179,14 @@ Model build_model(const scene::SceneConfig& scene) {
       dynamic ? fem::Amplitude{{{0.0, 1.0}}} : fem::Amplitude{}, problem.forces, mesh.num_nodes());
   if (dynamic) model.dynamics = make_dynamics(scene.dynamics, problem, model.tet_material, *model.elastic);
   if (model.contact_setup) {
+    const MatrixX mu = friction_coefficients(scene.contact, model.contact_setup->body_names);
+    if (mu.size() > 0 && mu.maxCoeff() > 0) {
+      const scene::FrictionConfig& f = scene.contact.friction;
+      model.friction_options = contact::FrictionOptions{
+          mu, f.slip_threshold.value_or(1e-3 * contact::mean_surface_edge(model.contact_setup->geometry, mesh.rest))};
+      model.friction_max_updates = f.max_updates;
+      model.friction_tolerance = f.tolerance;
+    }
     attach_contact(model, model.contact_setup->geometry, model.contact_setup->options);
     model.contact_enforcement = scene.contact.enforcement;
     if (scene.contact.relative_penetration_tolerance)

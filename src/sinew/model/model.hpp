@@ -13,6 +13,7 @@
 
 #include "sinew/contact/contact_enforcement.hpp"
 #include "sinew/contact/contact_energy.hpp"
+#include "sinew/contact/friction.hpp"
 #include "sinew/fem/elastic_energy.hpp"
 #include "sinew/fem/external_force_energy.hpp"
 #include "sinew/fem/problem.hpp"
@@ -52,6 +53,14 @@ struct Model {
   /// Penetration control of the contact term, its tolerance resolved to a length
   /// (contact_enforcement.hpp); solve_model applies it through a ContactRefinement.
   contact::ContactEnforcementOptions contact_enforcement;
+  /// Coulomb friction on the contact (contact/friction.hpp): null without contact or when every
+  /// coefficient is 0. Listed after the contact in the objective (it reads its pairs).
+  std::unique_ptr<contact::FrictionEnergy> friction;
+  /// The coefficients and slip threshold the friction term is (re)built with; none without friction.
+  std::optional<contact::FrictionOptions> friction_options;
+  /// Lag refreshes per step and the relative change of the total normal force that ends them.
+  int friction_max_updates = 5;
+  double friction_tolerance = 0.01;
   std::optional<Dynamics> dynamics;                 ///< none for a static analysis
   std::unique_ptr<solver::Objective> objective;     ///< Σ of the terms above, seen through the DofMap
   solver::StaticSolverOptions solver;               ///< the scene's linear solver, Newton and load stepping

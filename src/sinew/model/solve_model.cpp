@@ -10,8 +10,10 @@ namespace sinew::model {
 
 solver::StepperResult solve_model(Model& model, const solver::StepperCallbacks& callbacks) {
   std::unique_ptr<ContactRefinement> refinement;
-  if (model.contact && model.contact_enforcement.method != contact::ContactEnforcement::Penalty)
-    refinement = std::make_unique<ContactRefinement>(*model.contact, model.contact_enforcement);
+  if (model.contact && (model.contact_enforcement.method != contact::ContactEnforcement::Penalty || model.friction))
+    refinement = std::make_unique<ContactRefinement>(
+        *model.contact, model.contact_enforcement, model.friction.get(),
+        FrictionRefresh{model.friction_max_updates, model.friction_tolerance});
   if (!model.dynamics)
     return solver::solve_static(*model.objective, model.solver, model.scales, callbacks, refinement.get());
   const Dynamics& d = *model.dynamics;

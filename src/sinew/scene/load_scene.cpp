@@ -125,6 +125,11 @@ class SceneReader {
         error("contact.enforcement.method",
               "explicit integration keeps the penalty it started with (its stable step depends on it) and does not "
               "solve a step again: use \"implicit-euler\" or \"quasistatic\" with this method");
+      bool friction = config.contact.friction.coefficient > 0;
+      for (const ContactPairConfig& pair : config.contact.pairs) friction = friction || pair.friction.value_or(0) > 0;
+      if (friction && config.dynamics.options.integrator == solver::DynamicOptions::Integrator::Explicit)
+        error("contact.friction", "friction needs an implicit solve (its sticking branch is a stiff spring "
+                                  "of 2 mu N / slip_threshold): use \"implicit-euler\" or \"quasistatic\"");
     }
     config.output.vtu = scene.at("output").at("vtu").get<bool>();
     config.output.every = scene.at("output").at("every").get<int>();
@@ -302,6 +307,11 @@ class SceneReader {
     contact.penalty_scale = j.at("penalty_scale").get<double>();
     contact.self_contact = j.at("self_contact").get<bool>();
     read_enforcement(j.at("enforcement"), contact);
+    const json& friction = j.at("friction");
+    contact.friction.coefficient = friction.at("coefficient").get<double>();
+    if (friction.contains("slip_threshold")) contact.friction.slip_threshold = friction.at("slip_threshold").get<double>();
+    contact.friction.max_updates = friction.at("max_updates").get<int>();
+    contact.friction.tolerance = friction.at("tolerance").get<double>();
     std::vector<std::string> body_names;
     for (const BodyConfig& body : config.bodies) body_names.push_back(body.name);
     std::set<std::pair<std::string, std::string>> seen;
@@ -322,9 +332,12 @@ class SceneReader {
         }
       }
       if (pairs[k].contains("penalty")) pair.penalty = pairs[k].at("penalty").get<double>();
+      if (pairs[k].contains("friction")) pair.friction = pairs[k].at("friction").get<double>();
       pair.enabled = pairs[k].at("enabled").get<bool>();
       if (!pair.enabled && pair.penalty)
         error(json_path_key(path, "penalty"), "a disabled pair has no penalty (remove one of the two)");
+      if (!pair.enabled && pair.friction)
+        error(json_path_key(path, "friction"), "a disabled pair has no friction (remove one of the two)");
       const auto key = std::minmax(pair.body_a, pair.body_b);
       if (known && !seen.insert({key.first, key.second}).second)
         error(json_path_key(path, "bodies"), "this pair of bodies is listed twice");

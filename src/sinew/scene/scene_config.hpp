@@ -147,7 +147,16 @@ struct LoadsConfig {
 struct ContactPairConfig {
   std::string body_a, body_b;
   std::optional<double> penalty;  ///< force / length^3; absent: the automatic default
+  std::optional<double> friction;  ///< Coulomb coefficient of this pair; absent: ContactConfig's
   bool enabled = true;
+};
+
+/// Coulomb friction on the contact (contact/friction.hpp).
+struct FrictionConfig {
+  double coefficient = 0;                 ///< μ of every pair without its own (0: frictionless)
+  std::optional<double> slip_threshold;   ///< length; absent: 1e-3 of the mean contact-surface edge
+  int max_updates = 5;                    ///< lag refreshes per step at most
+  double tolerance = 0.01;                ///< relative change of the total normal force that ends them
 };
 
 /// Material-depth contact between all bodies (docs/theory.md).
@@ -167,6 +176,7 @@ struct ContactConfig {
   /// when the model is built.
   contact::ContactEnforcementOptions enforcement;
   std::optional<double> relative_penetration_tolerance;  ///< fraction of the mean surface edge
+  FrictionConfig friction;
 };
 
 /// Time integration instead of load stepping (absent: a static analysis).

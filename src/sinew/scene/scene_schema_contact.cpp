@@ -41,6 +41,32 @@ SchemaNode contact_schema() {
               .above(0)
               .fallback(defaults.penalty_scale),
           boolean("self_contact", "a body's surface may also penetrate the same body").fallback(defaults.self_contact),
+          object("friction",
+                 "Coulomb friction (docs/contact.md, \"Friction\"): a smoothed, lagged dissipative potential "
+                 "integrated over the same triangle-tet polygons as the normal contact; the normal forces and "
+                 "tangent directions are taken at the start of each load or time step and refreshed after each "
+                 "converged solve until the total normal force changes by less than the tolerance",
+                 {
+                     number("coefficient", "friction coefficient of every pair of bodies without its own (0: none)")
+                         .min(0)
+                         .max(100)
+                         .fallback(defaults.friction.coefficient),
+                     number("slip_threshold",
+                            "tangential slip per step (length) below which friction grows smoothly from 0 (static "
+                            "friction is approximated by this much creep); default 1e-3 of the mean edge length of "
+                            "the contact surfaces")
+                         .above(0)
+                         .max(kMaxLength),
+                     integer("max_updates", "refreshes of the lagged normal forces per step at most")
+                         .min(0)
+                         .max(100)
+                         .fallback(defaults.friction.max_updates),
+                     number("tolerance", "relative change of the total normal force below which the refreshes stop")
+                         .above(0)
+                         .max(1)
+                         .fallback(defaults.friction.tolerance),
+                 })
+              .fallback(json::object()),
           object("enforcement",
                  "penetration control beyond the plain penalty (docs/contact.md, \"Penetration control\"): "
                  "\"adaptive-penalty\" grows the penalty of a pair of bodies between steps while its largest "
@@ -72,6 +98,9 @@ SchemaNode contact_schema() {
                        {
                            array("bodies", "two body names", string("", "body name").non_empty()).required().items(2, 2),
                            number("penalty", "penalty of this pair (force / length^3)").above(0).max(kMaxPenalty),
+                           number("friction", "Coulomb friction coefficient of this pair (default: friction.coefficient)")
+                               .min(0)
+                               .max(100),
                            boolean("enabled", "false: these bodies do not touch").fallback(true),
                        }))
               .fallback(json::array()),

@@ -40,13 +40,15 @@ class ImplicitTimeStepping final : public StepScheme {
 
   fem::State predict(const fem::State& current, double t, double t_new, NewtonSolver&) override {
     const double h = t_new - t;
+    // From the converged state: terms that lag quantities per step (friction) take it as the
+    // step's start.
+    objective_.begin_step(current);
     fem::State trial = current;
     const double lambda = std::min(1.0, t_new / end_time_);
     objective_.dofs().sync(trial, lambda);
     objective_.set_load_parameter(lambda);
     if (with_inertia_) terms_.inertia->set_center_and_scale(current.x + h * velocity_, 1.0 / (h * h));
     if (terms_.viscosity) terms_.viscosity->set_center_and_scale(current.x, 1.0 / h);
-    objective_.begin_step(trial);
     return trial;
   }
 

@@ -1,0 +1,101 @@
+/// @file test_friction_examples.cpp
+/// Coulomb friction on examples/block-on-incline.json (docs/contact.md, "Friction"): a rigid block
+/// on a rigid plane under gravity tilted by θ. It slides with acceleration g (sin θ - μ cos θ)
+/// when tan θ > μ (within 2 %, the bound) and sticks when tan θ < μ: its slip per step
+/// stays below the slip threshold (the smoothed law's creep) and it does not accelerate. The
+/// friction force over the normal force is μ while it slides.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "examples/example_support.hpp"
+
+namespace sinew::examples_test {
+namespace {
+
+constexpr double kG = 9810.0;  // mm/s²
+
+struct Incline {
+  ExampleRun run;
+  double acceleration = 0;  ///< fitted over the second half of the run (mm/s²)
+  double travel = 0;        ///< block's x at the end minus at the start (mm)
+  double largest_angle = 0;  ///< of the block's rotation (degrees)
+  CsvTable steps;
+};
+
+/// Runs the example with gravity tilted by theta (degrees) and friction coefficient mu.
+Incline run_incline(double theta_deg, double mu, const TempDir& directory, const std::string& name) {
+  scene::SceneConfig config = scene::load_scene_file(example_path("block-on-incline").string());
+  const double theta = theta_deg * M_PI / 180;
+  config.loads.gravity = Vector3(kG * std::sin(theta), 0, -kG * std::cos(theta));
+  config.contact.friction.coefficient = mu;
+  config.output.vtu = false;
+  Incline result;
+  result.run = run_config(std::move(config), directory, name, name);
+  const auto bodies = read_csv(result.run.output / "rigid_bodies.csv");
+  result.steps = read_csv(result.run.output / "steps.csv");
+  const auto t = bodies.column("time");
+  const auto x = bodies.column("block/block.x");
+  const auto angle = bodies.column("block/block.angle_deg");
+  // x(t) = x0 + v0 t + a t² / 2 by least squares over the second half (implicit Euler moves a
+  // constant acceleration's parabola by a h t / 2, which v0 absorbs).
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    result.largest_angle = std::max(result.largest_angle, angle[i]);
+    if (t[i] < t.back() / 2) continue;
+    const Eigen::Vector3d phi(1, t[i], t[i] * t[i] / 2);
+    A += phi * phi.transpose();
+    b += phi * x[i];
+  }
+  result.acceleration = A.ldlt().solve(b)[2];
+  result.travel = x.back() - x.front();
+  return result;
+}
+
+TEST(FrictionExamples, BlockSlidesDownTheInclineWithCoulombsAcceleration) {
+  TempDir directory;
+  for (const auto& [theta, mu] : {std::pair{30.0, 0.3}, std::pair{20.0, 0.3}, std::pair{30.0, 0.0}}) {
+    const Incline r = run_incline(theta, mu, directory, "incline-" + std::to_string(int(theta)) + "-" + std::to_string(int(100 * mu)));
+    ASSERT_TRUE(r.run.report.success) << r.run.report.message;
+    const double t = theta * M_PI / 180;
+    const double expected = kG * (std::sin(t) - mu * std::cos(t));
+    std::printf("[ example  ] block on incline, theta %.0f, mu %.1f: acceleration %.2f mm/s^2 (Coulomb %.2f, ratio "
+                "%.4f), largest rotation %.3f deg\n",
+                theta, mu, r.acceleration, expected, r.acceleration / expected, r.largest_angle);
+    EXPECT_NEAR(r.acceleration, expected, 0.02 * expected);
+    EXPECT_LT(r.largest_angle, 1.0);  // it slides, it does not tumble
+    if (mu > 0) {
+      const std::size_t last = r.steps.rows.size() - 1;
+      const double ratio = r.steps.at(last, "contact.ground.block.friction_fx") /
+                           std::abs(r.steps.at(last, "contact.ground.block.fz"));
+      EXPECT_NEAR(ratio, mu, 0.01 * mu);  // friction on the ground from the block: μ N down the slope
+    }
+  }
+}
+
+TEST(FrictionExamples, BlockSticksWhenTheSlopeIsBelowTheFrictionAngle) {
+  TempDir directory;
+  const Incline r = run_incline(10.0, 0.3, directory, "incline-stick");
+  ASSERT_TRUE(r.run.report.success) << r.run.report.message;
+  const double frictionless = kG * std::sin(10.0 * M_PI / 180);
+  // The smoothed law creeps: per step the block slips s with f1(s) = tan θ / μ < 1, a fixed
+  // fraction of the threshold (default 1e-3 of the mean surface edge).
+  const std::size_t steps = r.steps.rows.size() - 1;
+  const double per_step = r.travel / static_cast<double>(steps);
+  std::printf("[ example  ] block on incline, theta 10, mu 0.3: acceleration %.4f mm/s^2 (frictionless %.1f), "
+              "travel %.4f mm over %zu steps (%.5f mm per step)\n",
+              r.acceleration, frictionless, r.travel, steps, per_step);
+  EXPECT_LT(std::abs(r.acceleration), 1e-3 * frictionless);
+  EXPECT_GT(per_step, 0);
+  EXPECT_LT(per_step, 0.01);  // the threshold here is about 0.008 mm
+  const std::size_t last = r.steps.rows.size() - 1;
+  const double ratio = r.steps.at(last, "contact.ground.block.friction_fx") /
+                       std::abs(r.steps.at(last, "contact.ground.block.fz"));
+  EXPECT_NEAR(ratio, std::tan(10.0 * M_PI / 180), 0.01);  // static friction balances the slope
+}
+
+}  // namespace
+}  // namespace sinew::examples_test
