@@ -3,7 +3,9 @@
 /// on a rigid plane under gravity tilted by θ. It slides with acceleration g (sin θ - μ cos θ)
 /// when tan θ > μ (within 2 %, the bound) and sticks when tan θ < μ: its slip per step
 /// stays below the slip threshold (the smoothed law's creep) and it does not accelerate. The
-/// friction force over the normal force is μ while it slides.
+/// friction force over the normal force is μ while it slides. And Puso and Laursen's ironing
+/// problem (examples/ironing.json, coarsened): in steady sliding the friction force is μ times the
+/// normal contact force within 3 %.
 
 #include <gtest/gtest.h>
 
@@ -95,6 +97,36 @@ TEST(FrictionExamples, BlockSticksWhenTheSlopeIsBelowTheFrictionAngle) {
   const double ratio = r.steps.at(last, "contact.ground.block.friction_fx") /
                        std::abs(r.steps.at(last, "contact.ground.block.fz"));
   EXPECT_NEAR(ratio, std::tan(10.0 * M_PI / 180), 0.01);  // static friction balances the slope
+}
+
+TEST(FrictionExamples, IroningDieSlidesWithFrictionMuTimesTheNormalForce) {
+  scene::SceneConfig config = scene::load_scene_file(example_path("ironing").string());
+  config.bodies[0].mesh.generate.element_size = 0.75;  // the example: 0.6 mm and 40 increments
+  config.bodies[1].mesh.generate.element_size = 0.75;
+  config.solver.stepping.increments = 24;
+  config.output.vtu = false;
+  TempDir directory;
+  const ExampleRun run = run_config(std::move(config), directory, "ironing (0.75 mm, 24 increments)");
+  ASSERT_TRUE(run.report.success) << run.report.message;
+  const auto steps = read_csv(run.output / "steps.csv");
+  double friction_ratio = 0, die_ratio = 0;
+  int sliding = 0;
+  for (std::size_t i = 0; i < steps.rows.size(); ++i) {
+    const double lambda = steps.at(i, "lambda");
+    if (lambda < 0.25 + 0.75 / 2) continue;  // steady sliding: the second half of the slide
+    const double ratio = steps.at(i, "contact.slab.die.friction_fx") / -steps.at(i, "contact.slab.die.fz");
+    EXPECT_NEAR(ratio, 0.3, 0.03 * 0.3) << "lambda " << lambda;
+    friction_ratio += ratio;
+    die_ratio += steps.at(i, "die_x.fx") / -steps.at(i, "die_z.fz");
+    ++sliding;
+  }
+  ASSERT_GT(sliding, 5);
+  std::printf("[ example  ] ironing: steady sliding over %d steps: friction / normal contact force %.4f, die "
+              "horizontal / vertical reaction %.4f (mu 0.3; the excess is the ploughing of the penalty's "
+              "penetration), largest penetration %.3f mm\n",
+              sliding, friction_ratio / sliding, die_ratio / sliding, steps.column_max("max_penetration"));
+  EXPECT_GT(die_ratio / sliding, 0.3);  // the die also ploughs: never less than the friction alone
+  EXPECT_LT(die_ratio / sliding, 0.45);
 }
 
 }  // namespace
