@@ -22,27 +22,6 @@ Basis tangent_basis(const Vector3& n) {
   return T;
 }
 
-/// The gradient of the tet's affine depth field (dimensionless), or zero for a flat field.
-Vector3 depth_gradient(const PairGeometry& pg) {
-  const Vector3 q0 = pg.tet.row(0);
-  const Vector3 e1 = Vector3(pg.tet.row(1)) - q0, e2 = Vector3(pg.tet.row(2)) - q0, e3 = Vector3(pg.tet.row(3)) - q0;
-  const double volume6 = e1.dot(e2.cross(e3));
-  if (!(std::abs(volume6) > 0)) return Vector3::Zero();
-  return (e2.cross(e3) * (pg.depth[1] - pg.depth[0]) + e3.cross(e1) * (pg.depth[2] - pg.depth[0]) +
-          e1.cross(e2) * (pg.depth[3] - pg.depth[0])) /
-         volume6;
-}
-
-/// The triangle's shape functions at y (in its plane).
-Vector3 triangle_shape(const PairGeometry& pg, const Vector3& y) {
-  const Vector3 a = pg.triangle.row(0), b = pg.triangle.row(1), c = pg.triangle.row(2);
-  const Vector3 n = (b - a).cross(c - a);
-  const double nn = n.squaredNorm();
-  const double s1 = (y - a).cross(c - a).dot(n) / nn;
-  const double s2 = (b - a).cross(y - a).dot(n) / nn;
-  return {1 - s1 - s2, s1, s2};
-}
-
 /// The combination Σ β x (triangle) - Σ ξ x (tet) of the point's 7 nodes at x.
 Vector3 relative_position(const FrictionPoint& p, const std::array<Index, 7>& nodes, const Positions& x) {
   Vector3 d = Vector3::Zero();
@@ -122,7 +101,7 @@ std::vector<FrictionPoint> friction_points(const ContactEnergy& contact, const M
         if (!(area > 0)) continue;
         const Vector3 centroid = (p0 + p1 + p2) / 3;
         const Eigen::Vector4d xi = (polygon.barycentric[0] + polygon.barycentric[J] + polygon.barycentric[J + 1]) / 3;
-        add(triangle_shape(pg, centroid), xi, area);
+        add(triangle_shape_functions(pg, centroid), xi, area);
       }
     } else {
       const collision::CollocationPoints& inside = pair.support.points;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "sinew/contact/dual.hpp"
 #include "sinew/contact/gradient_tape.hpp"
@@ -324,6 +325,21 @@ PolygonMoments area_moments(const PairGeometry& pair, const collision::ClipPolyg
     }
   }
   return m;
+}
+
+Vector3 depth_gradient(const PairGeometry& pair) {
+  const Nodes<double> n = make_nodes<double>(pair);
+  const Vec<double> e1 = n.tet[1] - n.tet[0], e2 = n.tet[2] - n.tet[0], e3 = n.tet[3] - n.tet[0];
+  if (!(std::abs(dot(e1, cross(e2, e3))) > 0)) return Vector3::Zero();
+  const Vec<double> G = depth_field(n, pair.depth).G;
+  return {G.x, G.y, G.z};
+}
+
+Vector3 triangle_shape_functions(const PairGeometry& pair, const Vector3& y) {
+  const Nodes<double> n = make_nodes<double>(pair);
+  const Vec<double> normal = cross(n.tri[1] - n.tri[0], n.tri[2] - n.tri[0]);
+  const Vec<double> N = triangle_shape(n, normal, 1.0 / dot(normal, normal), Vec<double>{y.x(), y.y(), y.z()});
+  return {N.x, N.y, N.z};
 }
 
 double point_integral(const PairGeometry& pair, const collision::CollocationPoints& points) {

@@ -77,6 +77,11 @@ struct PolygonMoments {
 };
 PolygonMoments area_moments(const PairGeometry& pair, const collision::ClipPolygon& polygon);
 
+/// The gradient of the tet's affine depth field ∇g_e (dimensionless; zero for a flat tet).
+Vector3 depth_gradient(const PairGeometry& pair);
+/// The triangle's linear shape functions (N0, N1, N2) at a point y of its plane.
+Vector3 triangle_shape_functions(const PairGeometry& pair, const Vector3& y);
+
 /// Point collocation: Σ over `points` (the triangle vertices inside the tet) of (A_t/3) g².
 double point_integral(const PairGeometry& pair, const collision::CollocationPoints& points);
 double point_integral_gradient(const PairGeometry& pair, const collision::CollocationPoints& points,
