@@ -4,13 +4,16 @@
 #include <cmath>
 #include <new>
 #include <string>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 
 #include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
 
 #include "convergence_study.hpp"
 #include "exit_codes.hpp"
+#include "interrupt.hpp"
 #include "run_scene.hpp"
 #include "sinew/core/enum_names.hpp"
 #include "sinew/core/error.hpp"
@@ -58,6 +61,15 @@ const CLI::Validator kFinitePositive(
     },
     "POSITIVE", "finite and > 0");
 
+/// The scene file's bytes and the overrides: with the meshes, what identifies a run for
+/// --resume (model::model_fingerprint).
+std::string scene_identity(const std::string& scene_path, const SceneOverrides& overrides) {
+  std::ifstream in(scene_path, std::ios::binary);
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return text + fmt::format("\n--element-size {:a} --max-tets {:a} --data-dir {}", overrides.element_size,
+                            overrides.max_tets, overrides.data_directory);
+}
+
 /// The command line as one string, for the output directory's lock file.
 std::string command_line(int argc, char** argv) {
   std::string text = "sinew";
@@ -78,6 +90,9 @@ int run_cli(int argc, char** argv) {
   } catch (const InputError& e) {
     logger().error("{}", e.what());
     return code(ExitCode::InputRejected);
+  } catch (const RunInterrupted& e) {
+    logger().error("{}", e.what());
+    return code(ExitCode::Interrupted);
   } catch (const OutputError& e) {
     logger().error("{}", e.what());
     return code(ExitCode::OutputFailed);
@@ -132,6 +147,9 @@ int run_commands(int argc, char** argv) {
   run->add_option("--element-size", overrides.element_size, element_size_help)->check(kFinitePositive);
   run->add_option("--max-tets", overrides.max_tets, max_tets_help)->check(kFinitePositive);
   run->add_option("--data-dir", overrides.data_directory, data_dir_help);
+  run->add_flag("--resume", run_options.resume,
+                "continue the run in the output directory from its checkpoint (same scene and options; after an "
+                "interrupt, a kill or a crash)");
 
   auto* validate = cli.add_subcommand("validate", "check a scene (schema, meshes, constraints) without solving");
   std::string validate_path;
@@ -255,8 +273,14 @@ int run_commands(int argc, char** argv) {
     run_options.command = command_line(argc, argv);
     // The output directory is checked before any work (nothing is written until the scene has
     // passed every check).
-    io::check_output_directory(run_options.output_directory, {.overwrite = run_options.overwrite});
+    io::check_output_directory(run_options.output_directory,
+                               {.overwrite = run_options.overwrite, .resume = run_options.resume});
     const auto config = with_overrides(scene::load_scene_file(scene_path), overrides);
+    run_options.scene_identity = scene_identity(scene_path, overrides);
+    run_options.resume_command = "sinew";
+    for (int i = 1; i < argc; ++i)
+      if (std::string(argv[i]) != "--overwrite") run_options.resume_command += std::string(" ") + argv[i];
+    if (!run_options.resume) run_options.resume_command += " --resume";
     const RunReport report = run_scene(config, run_options);
     if (!report.success) {
       logger().error("{}", report.message);

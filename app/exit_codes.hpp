@@ -14,6 +14,7 @@ enum class ExitCode : int {
   OutputFailed = 3,   ///< an output could not be written (full disk, permissions)
   OutOfMemory = 4,    ///< memory ran out
   InternalError = 5,  ///< a defect of sinew itself
+  Interrupted = 6,    ///< SIGINT or SIGTERM; checkpoint of the last converged state written
 };
 
 struct ExitCodeDoc {
@@ -21,7 +22,7 @@ struct ExitCodeDoc {
   const char* meaning;
 };
 
-inline constexpr std::array<ExitCodeDoc, 6> kExitCodeDocs{{
+inline constexpr std::array<ExitCodeDoc, 7> kExitCodeDocs{{
     {ExitCode::Success, "done: the run solved to its end (validate: the scene is valid)"},
     {ExitCode::InputRejected,
      "the scene, a mesh, the output directory or the command line was rejected; nothing was written"},
@@ -32,6 +33,9 @@ inline constexpr std::array<ExitCodeDoc, 6> kExitCodeDocs{{
      "says where the run stopped if it could be written"},
     {ExitCode::OutOfMemory, "memory ran out; outputs so far are complete, summary.json says where"},
     {ExitCode::InternalError, "an internal error of sinew (please report it with the scene)"},
+    {ExitCode::Interrupted,
+     "interrupted (SIGINT, SIGTERM): the last converged state is in checkpoint.cbor and last_converged.vtu; "
+     "go on with the same command and --resume"},
 }};
 
 /// "Exit codes:\n  0  done: ...\n  1  ..." for the help text.

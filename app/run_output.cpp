@@ -186,6 +186,26 @@ void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State&
   }
 }
 
+std::map<std::string, long long> RunOutput::counters() const {
+  std::map<std::string, long long> counts{{"steps", static_cast<long long>(steps_->rows())},
+                                          {"newton", static_cast<long long>(newton_->rows())}};
+  if (rigid_) counts["rigid_bodies"] = static_cast<long long>(rigid_->rows());
+  return counts;
+}
+
+void RunOutput::resume(const model::Checkpoint& checkpoint) {
+  auto rows = [&](const char* table) -> std::size_t {
+    const auto it = checkpoint.counters.find(table);
+    if (it == checkpoint.counters.end() || it->second < 0)
+      throw InputError(fmt::format("cannot resume: the checkpoint does not count the rows of {}", table));
+    return static_cast<std::size_t>(it->second);
+  };
+  steps_->restore(rows("steps"));
+  newton_->restore(rows("newton"));
+  if (rigid_) rigid_->restore(rows("rigid_bodies"));
+  series_->restore(checkpoint.series);
+}
+
 void RunOutput::flush_tables() const {
   steps_->flush();
   newton_->flush();

@@ -16,11 +16,13 @@
 ///                          and, in the VTU files, friction_force and friction_slip (|slip| / slip
 ///                          threshold over the step: >= 1 sliding, < 1 sticking) per node
 ///   newton.csv             one row per Newton iteration
-///   last_converged.vtu     on failure: the state the run could reach
-///   summary.json           status ("solved", "stopped", "output_error", "out_of_memory"),
+///   last_converged.vtu     on failure or interrupt: the state the run could reach
+///   checkpoint.cbor        the run's state after an accepted step, for --resume (run_checkpoints.hpp)
+///   summary.json           status ("solved", "stopped", "output_error", "out_of_memory", "interrupted"),
 ///                          message, counts, time per phase
 /// steps.csv and newton.csv are always written, with their header, even when no step converged.
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -32,6 +34,7 @@
 #include "sinew/io/csv.hpp"
 #include "sinew/io/vtu.hpp"
 #include "sinew/scene/scene_config.hpp"
+#include "sinew/model/checkpoint.hpp"
 #include "sinew/model/model.hpp"
 #include "sinew/solver/stepper.hpp"
 
@@ -70,10 +73,20 @@ class RunOutput {
   /// summary.json of a finished run, solved or stopped (keys of a static or a dynamic analysis).
   void write_summary(const solver::StepperResult& result, double wall_seconds, const std::string& scene_name);
   /// summary.json of a run stopped by something other than the solve (`status`: "output_error",
-  /// "out_of_memory"), with the load parameter or time reached (`reached_key`: lambda_reached or
+  /// "out_of_memory", "interrupted"), with the load parameter or time reached (`reached_key`: lambda_reached or
   /// time_reached); the CSV logs are flushed first.
   void write_stopped_summary(const std::string& scene_name, const std::string& status, const std::string& message,
                              const std::string& reached_key, double reached, double wall_seconds);
+
+  /// Rows written so far to each CSV table, by table ("steps", "newton", "rigid_bodies"): what a
+  /// checkpoint records so a resumed run goes on from the same rows.
+  std::map<std::string, long long> counters() const;
+  /// The ParaView series so far.
+  const std::vector<std::pair<double, std::string>>& series() const { return series_->entries(); }
+  /// Goes on from `checkpoint`: each CSV table keeps the rows the checkpoint counted (read from
+  /// its file; later rows of the interrupted run go), the series the checkpoint's entries.
+  /// Throws InputError when a table does not hold them.
+  void resume(const model::Checkpoint& checkpoint);
 
   const std::string& directory() const { return directory_; }
   /// Seconds spent before solving (meshing, material depth, model set-up): the "setup" phase

@@ -1,11 +1,15 @@
 #include "run_scene.hpp"
 
 #include <chrono>
+#include <filesystem>
+#include <optional>
 #include <cmath>
 #include <new>
 
 #include <fmt/format.h>
 
+#include "interrupt.hpp"
+#include "run_checkpoints.hpp"
 #include "run_output.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/core/log.hpp"
@@ -17,6 +21,17 @@
 namespace sinew::app {
 
 namespace {
+
+/// The checkpoint in `directory`, read before any work; InputError when there is none.
+model::Checkpoint read_run_checkpoint(const std::string& directory) {
+  io::check_output_directory(directory, {.resume = true});
+  const std::string path = directory + "/" + model::kCheckpointFile;
+  if (!std::filesystem::exists(path))
+    throw InputError(fmt::format("there is no checkpoint in \"{}\" ({} is missing: the run stopped before its first "
+                                 "step, wrote none, or used explicit integration): run the scene again with --overwrite instead of --resume",
+                                 directory, model::kCheckpointFile));
+  return model::read_checkpoint(path);
+}
 
 using Integrator = solver::DynamicOptions::Integrator;
 
@@ -39,8 +54,14 @@ std::string phase_split(const solver::PhaseTimes& t, double setup_seconds, doubl
 }
 
 /// The callbacks that write the outputs and the log of a run, static or dynamic.
+/// Throws RunInterrupted when SIGINT or SIGTERM came (the caller writes the checkpoint).
+void stop_if_interrupted() {
+  if (const int signal = InterruptGuard::pending())
+    throw RunInterrupted(InterruptGuard::name(signal));
+}
+
 solver::StepperCallbacks output_callbacks(const model::Model& model, RunOutput& output, io::ProgressBar& bar,
-                                          const RunOptions& options, double& reached) {
+                                          const RunOptions& options, double& reached, RunCheckpoints& checkpoints) {
   const bool dynamic = model.is_dynamic();
   const bool explicit_steps = dynamic && model.dynamics->options.integrator == Integrator::Explicit;
   const int increments = std::max(1, model.solver.stepping.increments);
@@ -49,6 +70,7 @@ solver::StepperCallbacks output_callbacks(const model::Model& model, RunOutput& 
                                                                          const solver::IterationRecord& it) {
     output.write_iteration(step, it);
     if (options.on_iteration) options.on_iteration(step.step, step.t, it);
+    stop_if_interrupted();
     if (!dynamic)
       bar.update(step.t - step.step_size, fmt::format("increment {}/{}  newton {}  |r|={:.2e}", step.segment,
                                                       increments, it.iteration, it.residual));
@@ -81,6 +103,10 @@ solver::StepperCallbacks output_callbacks(const model::Model& model, RunOutput& 
     else
       output.write_increment(k, increments, state);
   };
+  callbacks.on_accepted = [&checkpoints](const solver::StepperSnapshot& snapshot) {
+    checkpoints.on_accepted(snapshot);
+    stop_if_interrupted();
+  };
   callbacks.on_cut = [&bar, dynamic](const solver::StepRecord& step, const std::string& why) {
     log_line(bar, spdlog::level::warn,
              dynamic ? fmt::format("time step to t = {:.6g} (h = {:.3g}) failed, halving: {}", step.t, step.step_size, why)
@@ -91,7 +117,8 @@ solver::StepperCallbacks output_callbacks(const model::Model& model, RunOutput& 
 }
 
 RunReport solve_and_write(model::Model& model, RunOutput& output, const RunOptions& options,
-                          std::chrono::steady_clock::time_point start, double setup_seconds, double& reached) {
+                          std::chrono::steady_clock::time_point start, double setup_seconds, double& reached,
+                          RunCheckpoints& checkpoints, const model::Checkpoint* resume) {
   const bool dynamic = model.is_dynamic();
   if (dynamic && model.dynamics->options.integrator == Integrator::Explicit) {
     const model::Dynamics& d = *model.dynamics;
@@ -104,13 +131,15 @@ RunReport solve_and_write(model::Model& model, RunOutput& output, const RunOptio
   io::ProgressBar bar({.total = dynamic ? model.dynamics->options.end_time : 1.0, .label = model.name});
   RunReport report;
   report.setup_seconds = setup_seconds;
-  report.result = model::solve_model(model, output_callbacks(model, output, bar, options, reached));
+  report.result = model::solve_model(model, output_callbacks(model, output, bar, options, reached, checkpoints),
+                                     resume ? &resume->snapshot : nullptr);
   bar.finish();
   report.wall_seconds = seconds_since(start);
   report.success = report.result.success;
   report.message = report.result.message;
   if (!report.success) output.write_state("last_converged.vtu", report.result.last_state);
   output.write_summary(report.result, report.wall_seconds, model.name);
+  checkpoints.write_latest();  // after the tables are on disk: it counts their rows
   const auto& r = report.result;
   const std::string split = phase_split(r.times, report.setup_seconds, report.wall_seconds);
   if (dynamic)
@@ -126,14 +155,29 @@ RunReport solve_and_write(model::Model& model, RunOutput& output, const RunOptio
 
 RunReport run_scene(const scene::SceneConfig& scene, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  // Everything that can fail on bad input happens before the first file is written.
+  // Everything that can fail on bad input happens before the first file is written; a
+  // checkpoint to resume from is read before the meshing.
+  std::optional<model::Checkpoint> checkpoint;
+  if (options.resume) checkpoint = read_run_checkpoint(options.output_directory);
   model::Model model = model::build_model(scene);
   const double setup_seconds = seconds_since(start);
-  return run_model(model, scene.output, options, setup_seconds);
+  return run_model(model, scene.output, options, setup_seconds, checkpoint ? &*checkpoint : nullptr);
 }
 
 RunReport run_model(model::Model& model, const scene::OutputConfig& output_config, const RunOptions& options,
-                    double setup_seconds) {
+                    double setup_seconds, const model::Checkpoint* resume_from) {
+  std::optional<model::Checkpoint> read;
+  if (options.resume && !resume_from) resume_from = &read.emplace(read_run_checkpoint(options.output_directory));
+  const std::uint64_t fingerprint = model::model_fingerprint(model, options.scene_identity);
+  if (resume_from) {
+    const std::string source = fmt::format("the checkpoint in \"{}\"", options.output_directory);
+    if (resume_from->fingerprint != fingerprint)
+      throw InputError(fmt::format(
+          "{} belongs to another scene (the scene file, its meshes or the command-line overrides changed since it "
+          "was written): resume with the same scene and options, or start anew with --overwrite or another -o",
+          source));
+    model::check_snapshot_fits(model, resume_from->snapshot, source);
+  }
   const auto start = std::chrono::steady_clock::now() -
                      std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                          std::chrono::duration<double>(setup_seconds));
@@ -151,9 +195,18 @@ RunReport run_model(model::Model& model, const scene::OutputConfig& output_confi
                 problem.mesh.num_nodes(), problem.mesh.num_tets(), model.dofs->num_dofs(), problem.rigid_bodies.size(),
                 setup_seconds);
 
-  const io::OutputDirectoryLock lock(options.output_directory, {.overwrite = options.overwrite}, options.command);
+  const io::OutputDirectoryLock lock(options.output_directory,
+                                    {.overwrite = options.overwrite, .resume = resume_from != nullptr}, options.command);
   RunOutput output(options.output_directory, model, output_config);
   output.set_setup_seconds(setup_seconds);
+  if (resume_from) {
+    output.resume(*resume_from);
+    const solver::StepperSnapshot& s = resume_from->snapshot.stepper;
+    logger().info("resuming after step {} ({} = {:.6g}) from {}/{}", s.counts.steps,
+                  model.is_dynamic() ? "t" : "lambda", s.t, options.output_directory, model::kCheckpointFile);
+  }
+  RunCheckpoints checkpoints(model, output, output_config.checkpoint_every, fingerprint);
+  const InterruptGuard interrupt_guard;
   // Where the run is (lambda or time of the last accepted step), for a summary of a run that
   // stops for a failed write or for memory.
   double reached = 0;
@@ -165,7 +218,28 @@ RunReport run_model(model::Model& model, const scene::OutputConfig& output_confi
     }
   };
   try {
-    return solve_and_write(model, output, options, start, setup_seconds, reached);
+    return solve_and_write(model, output, options, start, setup_seconds, reached, checkpoints, resume_from);
+  } catch (const RunInterrupted& e) {
+    std::string message;
+    const model::RunSnapshot* last = checkpoints.latest();
+    if (last) {
+      const std::string resume_command =
+          !options.resume_command.empty() ? options.resume_command : options.command + " --resume";
+      message = fmt::format("interrupted by {} at {} = {:.6g} (step {}): the last converged state is checkpointed in "
+                            "{}; go on with: {}",
+                            e.what(), model.is_dynamic() ? "t" : "lambda", last->stepper.t,
+                            last->stepper.counts.steps, checkpoints.path(), resume_command);
+    } else {
+      message = fmt::format("interrupted by {} before the first step was accepted: there is nothing to resume, run "
+                            "the scene again",
+                            e.what());
+    }
+    record_stop("interrupted", message);  // flushes the tables the checkpoint counts rows of
+    if (last) {
+      checkpoints.write_latest();
+      output.write_state("last_converged.vtu", last->stepper.state);
+    }
+    throw RunInterrupted(message);
   } catch (const OutputError& e) {
     record_stop("output_error", e.what());
     throw;

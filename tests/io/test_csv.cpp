@@ -197,3 +197,42 @@ TEST(Csv, UnwritablePathThrowsNamingIt) {
 
 }  // namespace
 }  // namespace sinew::io
+
+namespace sinew::io {
+namespace {
+
+TEST(Csv, RestoreKeepsTheCountedRowsOfTheFileAndDropsLaterOnes) {
+  TempDir scratch;
+  const std::string path = scratch.file("steps.csv");
+  {
+    CsvTable table(path, {"step", "lambda"});
+    for (long long k = 1; k <= 5; ++k) table.add_row({k, 0.1 * static_cast<double>(k)});
+  }
+  CsvTable resumed(path, {"step", "lambda"});
+  resumed.restore(3);
+  EXPECT_EQ(resumed.rows(), 3u);
+  resumed.add_row({4LL, 0.4});
+  EXPECT_EQ(read_text(path), "step,lambda\n1,0.10000000000000001\n2,0.20000000000000001\n3,0.30000000000000004\n"
+                             "4,0.40000000000000002\n");
+}
+
+TEST(Csv, RestoreRefusesAMissingFileOtherColumnsAndTooFewRows) {
+  TempDir scratch;
+  const std::string path = scratch.file("steps.csv");
+  auto error = [&](const std::vector<std::string>& columns, std::size_t rows) {
+    try {
+      CsvTable(path, columns).restore(rows);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error({"step"}, 0).find("is missing or unreadable"), std::string::npos);
+  CsvTable({path, {"step", "lambda"}}).add_row({1LL, 0.5});
+  EXPECT_NE(error({"step", "time"}, 1).find("does not have the columns this scene writes"), std::string::npos);
+  EXPECT_NE(error({"step", "lambda"}, 2).find("has 1 rows, the checkpoint counted 2"), std::string::npos);
+  EXPECT_EQ(error({"step", "lambda"}, 1), "no error");
+}
+
+}  // namespace
+}  // namespace sinew::io

@@ -475,3 +475,25 @@ TEST(Pvd, FailedWriteDoesNotKeepTheEntry) {
 
 }  // namespace
 }  // namespace sinew::io
+
+namespace sinew::io {
+namespace {
+
+TEST(Pvd, RestoreRewritesTheCollectionAndLaterAddsGoOnFromIt) {
+  TempDir scratch;
+  PvdSeries first(scratch.file("run.pvd"));
+  first.add(0.0, "a.vtu");
+  first.add(1.0, "b.vtu");
+  const auto kept = first.entries();
+  first.add(2.0, "c.vtu");  // written after the checkpoint by a run that was then killed
+  PvdSeries resumed(scratch.file("run.pvd"));
+  resumed.restore(kept);
+  ASSERT_EQ(read_pvd(resumed.path()).size(), 2u);  // at once, even with nothing more to add
+  resumed.add(2.0, "c.vtu");
+  std::vector<std::string> files;
+  for (const auto& entry : read_pvd(resumed.path())) files.push_back(entry.file);
+  EXPECT_EQ(files, (std::vector<std::string>{"a.vtu", "b.vtu", "c.vtu"}));
+}
+
+}  // namespace
+}  // namespace sinew::io

@@ -36,6 +36,11 @@ class ThresholdScheme final : public solver::StepScheme {
   }
   void accept(const fem::State&, const fem::State&, double h) override { accepted.push_back(h); }
   void reject(const fem::State& current) override { objective_.set_load_parameter(current.lambda); }
+  solver::SchemeMemory memory(const fem::State&, solver::NewtonSolver&) override { return {}; }
+  void restore(const fem::State& current, const solver::SchemeMemory&) override {
+    objective_.set_load_parameter(current.lambda);
+    objective_.begin_step(current);
+  }
   double bound_step(double, double h, double) const override { return h; }
   std::string start_failed(const std::string& why) const override { return "start: " + why; }
   std::string turn_too_fast(double, double) const override { return "turn"; }
@@ -178,4 +183,60 @@ TEST(Stepper, TheFullStepRuleDoesNotGrowAfterAStepShortenedToLandOnASegmentEnd) 
   EXPECT_NEAR(full.sizes[1], 0.3, 1e-12);
   EXPECT_NEAR(full.sizes[2], 0.4, 1e-12);
   EXPECT_NEAR(full.sizes[3], 0.1, 1e-12);
+}
+
+TEST(Stepper, AResumedRunGoesOnFromEverySnapshotExactlyAsTheUninterruptedOne) {
+  // Steps longer than 0.07 fail: four steps and four cuts per segment, so snapshots fall
+  // before, at and after segment ends and the step size they carry matters.
+  const solver::StepperOptions options = four_segments();
+  std::vector<solver::StepperSnapshot> snapshots;
+  std::vector<double> segment_ends, step_ts;
+  solver::StepperResult full;
+  {
+    st::SolverRig rig(st::uniaxial_problem(1.3, 0.5, 0.2, 1.5));
+    solver::NewtonSolver newton(*rig.objective, {}, {.characteristic_length = std::sqrt(3.0), .reference_force = 1.0});
+    ThresholdScheme scheme(*rig.objective, 0.07);
+    solver::StepperCallbacks callbacks;
+    callbacks.on_accepted = [&](const solver::StepperSnapshot& s) { snapshots.push_back(s); };
+    callbacks.on_segment = [&](int, const solver::StepRecord& step, const fem::State&, const NodalVectors&) {
+      segment_ends.push_back(step.t);
+    };
+    callbacks.on_step = [&](const solver::StepRecord& step, const fem::State&, const NodalVectors&) {
+      step_ts.push_back(step.t);
+    };
+    full = solver::run_stepper(newton, scheme, options, callbacks);
+  }
+  ASSERT_TRUE(full.success);
+  ASSERT_EQ(snapshots.size(), 16u);
+  EXPECT_TRUE(snapshots[3].segment_done);
+  EXPECT_FALSE(snapshots[4].segment_done);
+  for (std::size_t i = 0; i < snapshots.size(); ++i) {
+    SCOPED_TRACE("resumed after step " + std::to_string(i + 1));
+    st::SolverRig rig(st::uniaxial_problem(1.3, 0.5, 0.2, 1.5));
+    solver::NewtonSolver newton(*rig.objective, {}, {.characteristic_length = std::sqrt(3.0), .reference_force = 1.0});
+    ThresholdScheme scheme(*rig.objective, 0.07);
+    solver::StepperOptions resumed_options = options;
+    resumed_options.resume = &snapshots[i];
+    std::vector<double> ends, ts;
+    solver::StepperCallbacks callbacks;
+    callbacks.on_segment = [&](int, const solver::StepRecord& step, const fem::State&, const NodalVectors&) {
+      ends.push_back(step.t);
+    };
+    callbacks.on_step = [&](const solver::StepRecord& step, const fem::State&, const NodalVectors&) {
+      ts.push_back(step.t);
+    };
+    const solver::StepperResult r = solver::run_stepper(newton, scheme, resumed_options, callbacks);
+    ASSERT_TRUE(r.success) << r.message;
+    EXPECT_EQ(r.steps, full.steps);
+    EXPECT_EQ(r.cuts, full.cuts);
+    EXPECT_EQ(r.newton_iterations, full.newton_iterations);
+    EXPECT_EQ(r.segments_completed, 4);
+    EXPECT_EQ(r.min_step, full.min_step);
+    EXPECT_NEAR((r.last_state.x - full.last_state.x).norm(), 0.0, 1e-12);
+    // The steps after the snapshot, and the segment ends not yet reported, exactly once each.
+    EXPECT_EQ(ts, std::vector<double>(step_ts.begin() + static_cast<std::ptrdiff_t>(i + 1), step_ts.end()));
+    const std::size_t reported = static_cast<std::size_t>(snapshots[i].counts.segments_completed);
+    EXPECT_EQ(ends, std::vector<double>(segment_ends.begin() + static_cast<std::ptrdiff_t>(reported + 1),
+                                        segment_ends.end()));
+  }
 }

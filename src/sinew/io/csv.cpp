@@ -1,6 +1,7 @@
 #include "sinew/io/csv.hpp"
 
 #include <cstdio>
+#include <fstream>
 #include <set>
 #include <string_view>
 
@@ -68,12 +69,31 @@ void CsvTable::append(const std::vector<Cell>& row) {
   rows_.push_back(std::move(line));
 }
 
-void CsvTable::flush() const {
+std::string CsvTable::header() const {
   std::string content;
   for (std::size_t i = 0; i < columns_.size(); ++i) {
     if (i > 0) content += ',';
     content += csv_field(columns_[i]);
   }
+  return content;
+}
+
+void CsvTable::restore(std::size_t rows) {
+  std::ifstream in(path_);
+  if (!in) throw InputError("cannot resume: '" + path_ + "' is missing or unreadable");
+  std::string line;
+  if (!std::getline(in, line) || line != header())
+    throw InputError("cannot resume: '" + path_ + "' does not have the columns this scene writes");
+  std::vector<std::string> kept;
+  while (kept.size() < rows && std::getline(in, line)) kept.push_back(line);
+  if (kept.size() < rows)
+    throw InputError("cannot resume: '" + path_ + "' has " + std::to_string(kept.size()) +
+                     " rows, the checkpoint counted " + std::to_string(rows));
+  rows_ = std::move(kept);
+}
+
+void CsvTable::flush() const {
+  std::string content = header();
   content += '\n';
   for (const std::string& line : rows_) {
     content += line;

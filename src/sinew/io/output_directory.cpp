@@ -72,6 +72,12 @@ bool written_by_sinew(const fs::path& directory) {
 
 /// Throws unless `directory` (an existing directory) may be written by this run.
 void check_contents(const fs::path& directory, const OutputDirectoryOptions& options) {
+  if (options.resume) {
+    if (!written_by_sinew(directory))
+      throw InputError("output directory " + quoted(directory) +
+                       " holds no earlier sinew run (no summary.json, sinew.pvd or .sinew.lock): nothing to resume");
+    return;
+  }
   const auto entries = other_entries(directory, 3);
   if (entries.empty()) return;
   std::string examples;
@@ -86,14 +92,32 @@ void check_contents(const fs::path& directory, const OutputDirectoryOptions& opt
                      "empty it even with --overwrite; choose a new directory with -o");
 }
 
+/// Removes the temporary files of atomic writes (".<name>.tmp.<pid>.<n>", atomic_file.cpp) that a
+/// killed run left in `directory` and its subdirectories; called under the directory's lock.
+void remove_stale_temporaries(const fs::path& directory) {
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (auto it = fs::recursive_directory_iterator(directory, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() > 1 && name[0] == '.' && name.find(".tmp.") != std::string::npos && it->is_regular_file(ec))
+      stale.push_back(it->path());
+  }
+  for (const fs::path& path : stale) fs::remove(path, ec);
+}
+
 }  // namespace
 
 void check_output_directory(const std::string& path, const OutputDirectoryOptions& options) {
   if (path.empty()) throw InputError("the output directory is empty: give a directory with -o");
   if (path.find('\0') != std::string::npos) throw InputError("the output directory's name contains a NUL byte");
+  if (options.resume && options.overwrite)
+    throw InputError("--resume continues the run in the output directory, --overwrite replaces it: give one of them");
   const fs::path directory(path);
   std::error_code ec;
   const auto status = fs::status(directory, ec);
+  if (options.resume && !fs::exists(status))
+    throw InputError("output directory " + quoted(directory) + " does not exist: there is no run to resume");
   if (fs::exists(status)) {
     if (!fs::is_directory(status))
       throw InputError("output directory " + quoted(directory) + " exists and is not a directory");
@@ -134,7 +158,9 @@ OutputDirectoryLock::OutputDirectoryLock(const std::string& path, const OutputDi
   // and, with overwrite, everything but the lock file goes.
   try {
     check_contents(directory, options);
+    if (options.resume) remove_stale_temporaries(directory);
     for (const auto& entry : fs::directory_iterator(directory)) {
+      if (options.resume) break;  // the earlier run's outputs are continued
       if (entry.path().filename() == kOutputLockFile) continue;
       fs::remove_all(entry.path(), ec);
       if (ec) throw OutputError("cannot remove " + quoted(entry.path()) + " of an earlier run: " + ec.message());

@@ -12,6 +12,9 @@ struct OutputDirectoryOptions {
   /// Empty a non-empty directory that an earlier sinew run wrote (it holds `.sinew.lock`,
   /// summary.json or sinew.pvd) before writing. A directory sinew did not write is never emptied.
   bool overwrite = false;
+  /// Continue the earlier sinew run in the directory (its checkpoint): the directory must exist
+  /// and hold that run's outputs, which stay.
+  bool resume = false;
 };
 
 /// The lock file sinew keeps in every output directory it writes (pid, start time, command).

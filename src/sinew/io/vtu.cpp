@@ -309,7 +309,20 @@ void PvdSeries::add(double time, const std::string& vtu_path) {
                          return t < entry.first;
                        });
   const auto inserted = entries_.insert(position, {time, dataset.generic_string()});
+  try {
+    write();
+  } catch (...) {
+    entries_.erase(inserted);  // the collection on disk and in memory stay the same
+    throw;
+  }
+}
 
+void PvdSeries::restore(std::vector<std::pair<double, std::string>> entries) {
+  entries_ = std::move(entries);
+  write();
+}
+
+void PvdSeries::write() const {
   std::string xml;
   xml += "<?xml version=\"1.0\"?>\n";
   xml += "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n";
@@ -320,12 +333,7 @@ void PvdSeries::add(double time, const std::string& vtu_path) {
   }
   xml += "  </Collection>\n";
   xml += "</VTKFile>\n";
-  try {
-    write_file_atomically(pvd_path_, xml);
-  } catch (...) {
-    entries_.erase(inserted);  // the collection on disk and in memory stay the same
-    throw;
-  }
+  write_file_atomically(pvd_path_, xml);
 }
 
 }  // namespace sinew::io

@@ -38,8 +38,14 @@ class PvdSeries {
   /// the .pvd atomically, so the collection is valid after every step.
   void add(double time, const std::string& vtu_path);
   const std::string& path() const { return pvd_path_; }
+  /// (time, file relative to the pvd's directory), sorted by time.
+  const std::vector<std::pair<double, std::string>>& entries() const { return entries_; }
+  /// Replaces the collection by `entries` (as entries() gave them) and rewrites the .pvd: a
+  /// resumed run goes on from the series its checkpoint recorded.
+  void restore(std::vector<std::pair<double, std::string>> entries);
 
  private:
+  void write() const;
   std::string pvd_path_;
   std::vector<std::pair<double, std::string>> entries_;
 };

@@ -56,6 +56,11 @@ void ContactRefinement::accept(const fem::State& state) {
   }
 }
 
+void ContactRefinement::restore_pressure(const VectorX& pressure) {
+  contact_.set_pressure(pressure);
+  accepted_pressure_ = pressure;
+}
+
 void ContactRefinement::reject() {
   updates_ = 0;
   friction_updates_ = 0;

@@ -37,6 +37,8 @@ class ContactRefinement final : public solver::StepRefinement {
   void accept(const fem::State& state) override;
   /// Restores the pressures of the last accepted step.
   void reject() override;
+  /// Continues a run whose last accepted step ended with these nodal pressures (#V or empty).
+  void restore_pressure(const VectorX& pressure);
 
   /// Largest penetration (L) at the last state refine() or accept() looked at.
   double last_max_penetration() const { return last_max_penetration_; }

@@ -133,6 +133,7 @@ class SceneReader {
     }
     config.output.vtu = scene.at("output").at("vtu").get<bool>();
     config.output.every = scene.at("output").at("every").get<int>();
+    config.output.checkpoint_every = scene.at("output").at("checkpoint_every").get<int>();
     for (std::string& clash : output_name_clashes(config)) errors.lines.push_back(std::move(clash));
     return config;
   }

@@ -193,6 +193,9 @@ struct DynamicsConfig {
 struct OutputConfig {
   bool vtu = true;        ///< write a .vtu per output step and a .pvd series
   int every = 1;          ///< write every n-th increment (the last one always)
+  /// Write checkpoint.cbor after every n-th accepted load step (static) or output interval
+  /// (dynamic, implicit), and at the end; 0: only at the end and on an interrupt.
+  int checkpoint_every = 1;
 };
 
 /// Limits on what a scene may ask of the machine. Not read from the scene file: the command line

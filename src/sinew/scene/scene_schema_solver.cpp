@@ -157,6 +157,12 @@ SchemaNode output_schema() {
                 {
                     boolean("vtu", "write a .vtu per output step and a .pvd series").fallback(defaults.vtu),
                     integer("every", "write every n-th increment (the last one always)").min(1).max(kMaxIncrements).fallback(defaults.every),
+                    integer("checkpoint_every",
+                            "write checkpoint.cbor (for sinew run --resume) after every n-th accepted load step, or "
+                            "output interval in dynamics, and at the end; 0: only at the end and on an interrupt")
+                        .min(0)
+                        .max(kMaxIncrements)
+                        .fallback(defaults.checkpoint_every),
                 })
       .fallback(json::object());
 }

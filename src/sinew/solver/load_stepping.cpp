@@ -25,9 +25,15 @@ class LoadStepping final : public StepScheme {
 
   fem::State predict(const fem::State& current, double, double lambda_new, NewtonSolver& newton) override {
     const fem::DofMap& dofs = objective_.dofs();
-    objective_.begin_step(current);
+    // The direction memory() computed at this state (after its begin_step there), once; a
+    // retry after a cut computes its own with the failed attempt's factorization, as below.
+    const bool cached_tangent = options_.predictor == Predictor::Tangent && tangent_.size() > 0;
+    if (!cached_tangent) objective_.begin_step(current);
     fem::State trial;
-    if (options_.predictor == Predictor::Tangent) {
+    if (cached_tangent) {
+      trial = dofs.apply_step(synced(current, lambda_new), (lambda_new - current.lambda) * tangent_, 1.0);
+      tangent_.resize(0);
+    } else if (options_.predictor == Predictor::Tangent) {
       trial = tangent_prediction(current, lambda_new, newton);
     } else if (options_.predictor == Predictor::TwoPoint && has_previous_) {
       trial = dofs.extrapolate(previous_, current, (lambda_new - current.lambda) / (current.lambda - previous_.lambda),
@@ -47,6 +53,27 @@ class LoadStepping final : public StepScheme {
   void accept(const fem::State& previous, const fem::State&, double) override {
     previous_ = previous;
     has_previous_ = true;
+    tangent_.resize(0);
+  }
+
+  SchemeMemory memory(const fem::State& current, NewtonSolver& newton) override {
+    SchemeMemory memory;
+    if (has_previous_) memory.previous = previous_;
+    if (options_.predictor == Predictor::Tangent) {
+      objective_.begin_step(current);
+      tangent_ = tangent_direction(current, newton);
+      objective_.set_load_parameter(current.lambda);
+      memory.tangent = tangent_;
+    }
+    return memory;
+  }
+
+  void restore(const fem::State& current, const SchemeMemory& memory) override {
+    has_previous_ = memory.previous.x.rows() > 0;
+    previous_ = memory.previous;
+    tangent_ = memory.tangent;
+    objective_.set_load_parameter(current.lambda);
+    objective_.begin_step(current);
   }
 
   void reject(const fem::State& current) override { objective_.set_load_parameter(current.lambda); }
@@ -84,10 +111,18 @@ class LoadStepping final : public StepScheme {
   }
 
  private:
-  /// First-order predictor: dq = -K^-1 (dg/dlambda) dlambda, with dg/dlambda from a forward
+  /// `state` synced to the prescribed motion at `lambda`.
+  fem::State synced(const fem::State& state, double lambda) const {
+    fem::State out = state;
+    objective_.dofs().sync(out, lambda);
+    return out;
+  }
+
+  /// First-order predictor: dq/dlambda = -K^-1 (dg/dlambda), with dg/dlambda from a forward
   /// difference of the gradient under the prescribed motion and loads alone, K from the last
-  /// factorization.
-  fem::State tangent_prediction(const fem::State& converged, double lambda_new, NewtonSolver& newton) {
+  /// factorization (made at `converged` when there is none). Empty when the solve fails. Leaves
+  /// the objective's load parameter at converged.lambda + a small nudge.
+  VectorX tangent_direction(const fem::State& converged, NewtonSolver& newton) {
     const fem::DofMap& dofs = objective_.dofs();
     const double lambda0 = converged.lambda;
     const double h = 1e-6 * std::max(1.0, std::abs(lambda0));
@@ -106,25 +141,33 @@ class LoadStepping final : public StepScheme {
       dofs.sync(nudged, lambda0 + h);
       objective_.set_load_parameter(lambda0 + h);
       gh = dofs.reduce_gradient(nudged, objective_.full_gradient(nudged));
-      objective_.set_load_parameter(lambda_new);
     }
-    fem::State base = converged;
-    dofs.sync(base, lambda_new);
-    VectorX dq;
-    if (!factorized || !newton.solve_with_last_factorization(-(gh - g0) / h * (lambda_new - lambda0), dq)) return base;
-    return dofs.apply_step(base, dq, 1.0);
+    VectorX tangent;
+    if (!factorized || !newton.solve_with_last_factorization(-(gh - g0) / h, tangent)) return {};
+    return tangent;
+  }
+
+  /// The tangent predictor's state at lambda_new from `converged`; the objective is left at lambda_new.
+  fem::State tangent_prediction(const fem::State& converged, double lambda_new, NewtonSolver& newton) {
+    const VectorX tangent = tangent_direction(converged, newton);
+    objective_.set_load_parameter(lambda_new);
+    fem::State base = synced(converged, lambda_new);
+    if (tangent.size() == 0) return base;
+    return objective_.dofs().apply_step(base, (lambda_new - converged.lambda) * tangent, 1.0);
   }
 
   Objective& objective_;
   LoadSteppingOptions options_;
   fem::State previous_;
   bool has_previous_ = false;
+  VectorX tangent_;  ///< dq/dlambda at the last accepted state, from memory(); empty once used
 };
 
 }  // namespace
 
 StepperResult solve_static(Objective& objective, const StaticSolverOptions& options, const NewtonSetup& setup,
-                           const StepperCallbacks& callbacks, StepRefinement* refinement) {
+                           const StepperCallbacks& callbacks, StepRefinement* refinement,
+                           const StepperSnapshot* resume) {
   NewtonSolver newton(objective, options.linear, setup);
   LoadStepping scheme(objective, options.stepping);
   const LoadSteppingOptions& stepping = options.stepping;
@@ -144,6 +187,7 @@ StepperResult solve_static(Objective& objective, const StaticSolverOptions& opti
   o.start = StepperOptions::Start::SolveEquilibrium;
   o.growth_rule = StepperOptions::Growth::AfterEasyStep;
   o.newton = options.newton;
+  o.resume = resume;
   return run_stepper(newton, scheme, o, callbacks, refinement);
 }
 

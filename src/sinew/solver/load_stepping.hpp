@@ -12,6 +12,7 @@ namespace sinew::solver {
 /// Equilibrium at lambda = 0, then at the end of every increment, of `objective`.
 /// `setup.transient_terms` must be empty.
 StepperResult solve_static(Objective& objective, const StaticSolverOptions& options, const NewtonSetup& setup,
-                           const StepperCallbacks& callbacks = {}, StepRefinement* refinement = nullptr);
+                           const StepperCallbacks& callbacks = {}, StepRefinement* refinement = nullptr,
+                           const StepperSnapshot* resume = nullptr);
 
 }  // namespace sinew::solver

@@ -32,35 +32,63 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
     if (callbacks.on_iteration) callbacks.on_iteration(attempt, it);
   };
 
-  fem::State current = scheme.start();
-  const StepRecord start_record;
-  if (options.start == StepperOptions::Start::SolveEquilibrium) {
-    // The start may be deeply interpenetrated (contact pushes it apart): a larger budget.
-    NewtonOptions initial = options.newton;
-    initial.max_iterations = std::max(4 * initial.max_iterations, 100);
-    fem::State unsolved = current;
-    const NewtonResult solved = newton.solve(current, initial, on_iteration);
-    result.newton_iterations += solved.iterations;
-    if (!solved.converged) {
-      result.message = scheme.start_failed(solved.failure);
-      result.last_state = std::move(unsolved);
-      return finish(result);
-    }
-  } else if (callbacks.on_step) {
-    callbacks.on_step(start_record, current, scheme.velocity());
-  }
-  result.last_state = current;
-  if (callbacks.on_segment) callbacks.on_segment(0, start_record, current, scheme.velocity());
-
   const double segment_length = options.segment_length > 0 ? options.segment_length : options.end;
   const int segments = std::max(1, static_cast<int>(std::ceil(options.end / segment_length * (1 - 1e-12))));
   double step = std::min(options.first_step, options.max_step);
   int failures_in_a_row = 0;  // attempts failed since the last converged step
   double t = 0;
-  result.min_step = std::numeric_limits<double>::infinity();
+  int first_segment = 1;
   StepRecord record;
+  fem::State current;
+  result.min_step = std::numeric_limits<double>::infinity();
 
-  for (int k = 1; k <= segments; ++k) {
+  if (const StepperSnapshot* snapshot = options.resume) {
+    current = snapshot->state;
+    scheme.restore(current, snapshot->scheme);
+    t = snapshot->t;
+    step = snapshot->next_step;
+    record = snapshot->record;
+    const StepCounts& c = snapshot->counts;
+    result.segments_completed = c.segments_completed;
+    result.steps = c.steps;
+    result.newton_iterations = c.newton_iterations;
+    result.cuts = c.cuts;
+    result.snap_throughs = c.snap_throughs;
+    result.refinements = c.refinements;
+    if (c.steps > 0) result.min_step = c.min_step;
+    result.max_step = c.max_step;
+    result.t = t;
+    first_segment = snapshot->segment_done ? snapshot->segment + 1 : snapshot->segment;
+  } else {
+    current = scheme.start();
+    const StepRecord start_record;
+    if (options.start == StepperOptions::Start::SolveEquilibrium) {
+      // The start may be deeply interpenetrated (contact pushes it apart): a larger budget.
+      NewtonOptions initial = options.newton;
+      initial.max_iterations = std::max(4 * initial.max_iterations, 100);
+      fem::State unsolved = current;
+      const NewtonResult solved = newton.solve(current, initial, on_iteration);
+      result.newton_iterations += solved.iterations;
+      if (!solved.converged) {
+        result.message = scheme.start_failed(solved.failure);
+        result.last_state = std::move(unsolved);
+        return finish(result);
+      }
+    } else if (callbacks.on_step) {
+      callbacks.on_step(start_record, current, scheme.velocity());
+    }
+    if (callbacks.on_segment) callbacks.on_segment(0, start_record, current, scheme.velocity());
+  }
+  result.last_state = current;
+
+  // Ends segment k at the last accepted step (once).
+  auto complete_segment = [&](int k) {
+    if (result.segments_completed >= k) return;
+    result.segments_completed = k;
+    if (callbacks.on_segment) callbacks.on_segment(k, record, current, scheme.velocity());
+  };
+
+  for (int k = first_segment; k <= segments; ++k) {
     const double target = k == segments ? options.end : std::min(options.end, k * segment_length);
     while (t < target - 1e-12 * segment_length) {
       double h = std::min(step, target - t);
@@ -119,6 +147,21 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
         const bool easy = iterations <= options.easy_iterations;
         const bool full = options.growth_rule == StepperOptions::Growth::AfterEasyStep || h >= step * (1 - 1e-12);
         if (easy && full) step = std::min(step * options.growth, options.max_step);
+        const bool segment_done = !(t < target - 1e-12 * segment_length);
+        if (segment_done) complete_segment(k);
+        if (callbacks.on_accepted) {
+          StepperSnapshot snapshot;
+          snapshot.state = current;
+          snapshot.t = t;
+          snapshot.next_step = step;
+          snapshot.segment = k;
+          snapshot.segment_done = segment_done;
+          snapshot.record = record;
+          snapshot.counts = {result.segments_completed, result.steps, result.newton_iterations, result.cuts,
+                             result.snap_throughs, result.refinements, result.min_step, result.max_step};
+          snapshot.scheme = scheme.memory(current, newton);
+          callbacks.on_accepted(snapshot);
+        }
         continue;
       }
       if (refinement) refinement->reject();
@@ -134,8 +177,7 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
         return finish(result);
       }
     }
-    result.segments_completed = k;
-    if (callbacks.on_segment) callbacks.on_segment(k, record, current, scheme.velocity());
+    complete_segment(k);
   }
   result.success = true;
   result.t = t;

@@ -29,6 +29,41 @@ struct StepRecord {
   int refinements = 0;      ///< re-solves of this step asked by the StepRefinement (0 without one)
 };
 
+/// What a step scheme carries from one accepted step to the next (StepScheme::memory).
+struct SchemeMemory {
+  /// Load stepping, two-point predictor: the accepted state before the last (x has 0 rows when
+  /// there is none yet).
+  fem::State previous;
+  /// Load stepping, tangent predictor: dq/dlambda at the last accepted state (#q), or empty.
+  VectorX tangent;
+  /// Time stepping: nodal velocities of the last accepted state (#V x 3, length / time).
+  NodalVectors velocity;
+};
+
+/// Counters of a run so far (StepperResult has the same).
+struct StepCounts {
+  int segments_completed = 0;
+  int steps = 0;
+  int newton_iterations = 0;
+  int cuts = 0;
+  int snap_throughs = 0;
+  int refinements = 0;
+  double min_step = 0, max_step = 0;  ///< of the accepted steps (t units)
+};
+
+/// Where a run stands after an accepted step: what it takes to continue the run exactly as it
+/// would have gone on (checkpoints and resume, docs/checkpoints.md).
+struct StepperSnapshot {
+  fem::State state;            ///< the last accepted state
+  double t = 0;                ///< its parameter (lambda or time)
+  double next_step = 0;        ///< size of the next attempt (t units), before bounds
+  int segment = 1;             ///< segment of the last accepted step (1-based)
+  bool segment_done = false;   ///< the step ended its segment (on_segment was called for it)
+  StepRecord record;           ///< the last accepted step
+  StepCounts counts;
+  SchemeMemory scheme;
+};
+
 struct StepperCallbacks {
   /// Every Newton iteration; `step` describes the step being attempted.
   std::function<void(const StepRecord& step, const IterationRecord& iteration)> on_iteration;
@@ -41,6 +76,9 @@ struct StepperCallbacks {
       on_segment;
   /// A step failed and will be retried smaller.
   std::function<void(const StepRecord& step, const std::string& why)> on_cut;
+  /// After every accepted step, once on_step (and on_segment, when the step ended a segment)
+  /// returned: where the run stands (not called by explicit integration).
+  std::function<void(const StepperSnapshot& snapshot)> on_accepted;
 };
 
 /// What every run reports, load or time stepping.
@@ -86,6 +124,9 @@ struct StepperOptions {
   Start start = Start::SolveEquilibrium;
   Growth growth_rule = Growth::AfterEasyStep;
   NewtonOptions newton;
+  /// Continue from this snapshot (of a run of the same problem and options) instead of starting
+  /// at t = 0: no start solve, no step-0 callbacks; counters go on from the snapshot's.
+  const StepperSnapshot* resume = nullptr;
 };
 
 /// The part of a step that differs between load stepping and time stepping.
@@ -99,6 +140,12 @@ class StepScheme {
   virtual fem::State predict(const fem::State& current, double t, double t_new, NewtonSolver& newton) = 0;
   /// `current` converged at the end of a step of size h from `previous`.
   virtual void accept(const fem::State& previous, const fem::State& current, double h) = 0;
+  /// What the next step needs of the steps before, at the last accepted state `current` (the
+  /// tangent predictor computes its direction here, with `newton`'s last factorization, and
+  /// uses it for the next step).
+  virtual SchemeMemory memory(const fem::State& current, NewtonSolver& newton) = 0;
+  /// Continue from `current` with what memory() returned (sets the objective up for it).
+  virtual void restore(const fem::State& current, const SchemeMemory& memory) = 0;
   /// A step from `current` failed: undo what predict() set up for the objective.
   virtual void reject(const fem::State& current) = 0;
   /// Nodal velocities of the last accepted state (#V x 3), or 0 rows.

@@ -58,6 +58,18 @@ class ImplicitTimeStepping final : public StepScheme {
 
   void reject(const fem::State& current) override { objective_.set_load_parameter(current.lambda); }
 
+  SchemeMemory memory(const fem::State&, NewtonSolver&) override {
+    SchemeMemory memory;
+    memory.velocity = velocity_;
+    return memory;
+  }
+
+  void restore(const fem::State& current, const SchemeMemory& memory) override {
+    velocity_ = memory.velocity;
+    objective_.set_load_parameter(current.lambda);
+    objective_.begin_step(current);
+  }
+
   const NodalVectors& velocity() const override { return velocity_; }
 
   double bound_step(double t, double h, double smallest) const override {
@@ -129,6 +141,7 @@ StepperResult solve_dynamic(Objective& objective, const DynamicTerms& terms, con
   o.start = StepperOptions::Start::GivenState;
   o.growth_rule = StepperOptions::Growth::AfterEasyFullStep;
   o.newton = newton_options.newton;
+  o.resume = dynamic_setup.resume;
   return run_stepper(newton, scheme, o, callbacks, refinement);
 }
 

@@ -26,6 +26,8 @@ struct DynamicTerms {
 struct DynamicSetup {
   double critical_time_step = 0;  ///< explicit: 2 / ω_max (time); required > 0
   NodalVectors initial_velocity;  ///< #V x 3, or empty for rest
+  /// Implicit integration: continue from this snapshot of a run of the same problem.
+  const StepperSnapshot* resume = nullptr;
 };
 
 /// Integrates from t = 0 to options.end_time. StepRecord::t is the time; on_segment is called
