@@ -276,5 +276,19 @@ TEST(Cli, MaxTetsBoundsTheEstimatedMeshBeforeMeshing) {
   EXPECT_EQ(nan.exit_code, 1) << nan.err;
 }
 
+// A scene with nothing left to solve (a prescribed rigid body alone) once crashed the tangent
+// predictor, which factorized a 0 x 0 stiffness; it runs to its end.
+TEST(Cli, ASceneWithNoUnknownsRunsToItsEnd) {
+  TempDir directory;
+  const fs::path scene = directory / "scene.json";
+  json j = small_block_scene();
+  j["bodies"][0]["regions"]["rubber"] = {{"rigid", {{"prescribed", {{"translation", {1, 0, 0}}}}}}};
+  j["boundary_conditions"] = json::array();
+  write_text(scene, j.dump(2));
+  const CommandResult result = run_scene_file(scene, directory / "out", directory);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_THAT(read_text(directory / "out" / "rigid_bodies.csv"), HasSubstr("block"));
+}
+
 }  // namespace
 }  // namespace sinew::app_test

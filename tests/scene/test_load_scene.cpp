@@ -558,5 +558,62 @@ TEST(LoadSceneDynamics, SectionIsReadWithDefaultsAndBadValuesNameTheirPath) {
   EXPECT_THAT(parse_error(scene), HasSubstr("dynamics.output_interval"));
 }
 
+TEST(LoadScene, KeyframesKeyedByLambdaOrByTimeBecomeLoadParameters) {
+  json scene = minimal_scene();
+  scene["boundary_conditions"] = json::parse(R"([{"name": "move", "type": "prescribed", "nodes": {"all": true},
+     "motion": {"pivot": [1, 2, 3], "keyframes": [
+       {"lambda": 0},
+       {"lambda": 0.5, "translation": [1, 0, 0], "rotation": {"axis": [0, 0, 2], "angle_deg": 90}},
+       {"lambda": 1, "translation": [2, 0, 0]}]}}])");
+  SceneConfig config = parse_scene(scene, "");
+  const fem::RigidMotion& motion = config.boundary_conditions.at(0).motion;
+  ASSERT_EQ(motion.keyframes.size(), 3u);
+  EXPECT_EQ(motion.keyframes[1].lambda, 0.5);
+  EXPECT_EQ(motion.pivot, Vector3(1, 2, 3));
+  EXPECT_NEAR(Eigen::AngleAxisd(motion.keyframes[1].rotation).angle(), M_PI / 2, 1e-15);
+  EXPECT_EQ(motion.keyframes[2].translation, Vector3(2, 0, 0));
+
+  scene["dynamics"] = {{"end_time", 2.0}, {"output_interval", 0.5}};
+  scene["boundary_conditions"][0]["motion"]["keyframes"] = json::parse(R"([{"time": 0}, {"time": 0.5, "translation": [1, 0, 0]}, {"time": 2}])");
+  config = parse_scene(scene, "");
+  ASSERT_EQ(config.boundary_conditions.at(0).motion.keyframes.size(), 3u);
+  EXPECT_EQ(config.boundary_conditions.at(0).motion.keyframes[1].lambda, 0.25);
+}
+
+TEST(LoadSceneErrors, EveryBadKeyframeIsNamedByItsPath) {
+  json scene = minimal_scene();
+  scene["boundary_conditions"] = json::parse(R"([{"name": "move", "type": "prescribed", "nodes": {"all": true},
+     "motion": {"translation": [1, 0, 0], "keyframes": [
+       {"lambda": 0},
+       {"lambda": 0.5, "time": 0.5},
+       {},
+       {"time": 1},
+       {"lambda": 0.5},
+       {"lambda": 0.25}]}}])");
+  EXPECT_EQ(parse_error(scene),
+            "boundary_conditions[0].motion.keyframes: keyframes replace \"translation\", \"rotation\" and "
+            "\"amplitude\": give either the keyframes or those\n"
+            "boundary_conditions[0].motion.keyframes[1]: give the keyframe's place as exactly one of \"lambda\" (load "
+            "parameter) or \"time\"\n"
+            "boundary_conditions[0].motion.keyframes[2]: give the keyframe's place as exactly one of \"lambda\" (load "
+            "parameter) or \"time\"\n"
+            "boundary_conditions[0].motion.keyframes[3]: keyframes of one motion are keyed all by \"lambda\" or all by "
+            "\"time\", not both\n"
+            "boundary_conditions[0].motion.keyframes[5].lambda: keyframes must be strictly increasing, got 0.25 after 0.5");
+  scene["boundary_conditions"][0]["motion"] = json::parse(R"({"keyframes": [{"time": 0}, {"time": 1}]})");
+  EXPECT_EQ(parse_error(scene),
+            "boundary_conditions[0].motion.keyframes[0].time: a keyframe keyed by time needs a dynamic analysis (a "
+            "\"dynamics\" section); a static one is keyed by \"lambda\"\n"
+            "boundary_conditions[0].motion.keyframes[1].time: a keyframe keyed by time needs a dynamic analysis (a "
+            "\"dynamics\" section); a static one is keyed by \"lambda\"");
+  scene["boundary_conditions"][0]["motion"] =
+      json::parse(R"({"keyframes": [{"lambda": 0, "rotation": {"axis": [0, 0, 0], "angle_deg": 10}}]})");
+  EXPECT_EQ(parse_error(scene), "boundary_conditions[0].motion.keyframes[0].rotation.axis: must not be the zero vector");
+  scene["boundary_conditions"][0]["motion"] = json::parse(R"({"keyframes": [{"lambda": 0, "translation": [1e300, 0, 0]}]})");
+  EXPECT_THAT(parse_error(scene), ::testing::HasSubstr("boundary_conditions[0].motion.keyframes[0].translation[0]"));
+  scene["boundary_conditions"][0]["motion"] = json::parse(R"({"keyframes": []})");
+  EXPECT_THAT(parse_error(scene), ::testing::HasSubstr("boundary_conditions[0].motion.keyframes"));
+}
+
 }  // namespace
 }  // namespace sinew::scene

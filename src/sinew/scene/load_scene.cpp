@@ -51,6 +51,8 @@ class SceneReader {
 
   SceneConfig read(const json& scene) {
     SceneConfig config;
+    // Keyframes keyed by time need it before the bodies and boundary conditions are read.
+    if (scene.contains("dynamics")) end_time_ = scene.at("dynamics").at("end_time").get<double>();
     config.name = scene.at("name").get<std::string>();
     config.description = scene.at("description").get<std::string>();
     config.units = scene.at("units").get<std::string>();
@@ -140,6 +142,7 @@ class SceneReader {
 
  private:
   std::string base_directory_;
+  double end_time_ = 0;  ///< the dynamic analysis's end time, 0 for a static one
 
   void error(const std::string& path, const std::string& message) { errors.add(path, message); }
 
@@ -273,7 +276,8 @@ class SceneReader {
       } else {
         region.rigid_kind = RigidKind::Prescribed;
         region.rigid_motion =
-            read_motion(rigid.at(prescribed), json_path_key(json_path_key(path, "rigid"), prescribed), errors);
+            read_motion(rigid.at(prescribed), json_path_key(json_path_key(path, "rigid"), prescribed), errors,
+                        end_time_);
       }
       if (region.fiber_direction) {
         error(json_path_key(path, "fiber_direction"), "a rigid region has no fibers");
@@ -453,7 +457,7 @@ class SceneReader {
       case BoundaryConditionConfig::Kind::Fixed:
         break;
       case BoundaryConditionConfig::Kind::Prescribed:
-        bc.motion = read_motion(j.at("motion"), json_path_key(path, "motion"), errors);
+        bc.motion = read_motion(j.at("motion"), json_path_key(path, "motion"), errors, end_time_);
         break;
       case BoundaryConditionConfig::Kind::Planar:
         bc.normal = to_vector3(j.at("normal"));

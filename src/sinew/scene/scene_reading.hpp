@@ -59,8 +59,9 @@ std::optional<E> kind_key(const json& j) {
 /// A piecewise-linear amplitude; lambda must increase strictly.
 fem::Amplitude read_amplitude(const json& j, const std::string& path, ReadErrors& errors);
 
-/// A rigid motion (translation, rotation in degrees, amplitude).
-fem::RigidMotion read_motion(const json& j, const std::string& path, ReadErrors& errors);
+/// A rigid motion (translation, rotation in degrees, amplitude), or its keyframes (keyed by
+/// lambda, or by time in a dynamic analysis of `end_time`; 0 for a static one).
+fem::RigidMotion read_motion(const json& j, const std::string& path, ReadErrors& errors, double end_time);
 
 /// A solid of a generated mesh: a primitive or a boolean of shapes, with its transform.
 mesh::Shape read_shape(const json& j, const std::string& path, ReadErrors& errors);

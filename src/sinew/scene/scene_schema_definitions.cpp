@@ -38,6 +38,30 @@ SchemaNode motion_definition() {
                                number("angle_deg", "final angle (degrees, right-hand rule)").required().within(kMaxAngle),
                            }),
                     ref("amplitude", "factor a(lambda) applied to angle and translation", "amplitude"),
+                    array("keyframes",
+                          "poses at given load parameters or times, instead of translation, rotation and amplitude: "
+                          "x = R (X - pivot) + pivot + translation, with the translation interpolated linearly and "
+                          "the rotation by slerp (along the shorter arc: keep consecutive keyframes less than 180 "
+                          "degrees apart); held before the first and after the last",
+                          object("", "a keyframe: its place (lambda or time) and its pose",
+                                 {
+                                     number("lambda", "load parameter of the keyframe (static; strictly increasing)")
+                                         .within(kMaxFactor),
+                                     number("time", "time of the keyframe (dynamics: lambda = time / end_time)")
+                                         .within(kMaxTime),
+                                     vec3("translation", "translation at the keyframe (length)")
+                                         .within(kMaxLength)
+                                         .fallback(vec3_json(Vector3::Zero())),
+                                     object("rotation", "rotation about the motion's pivot at the keyframe (none when omitted)",
+                                            {
+                                                vec3("axis", "rotation axis direction, normalized on use").required().nonzero().within(kMaxLength),
+                                                number("angle_deg", "angle (degrees, right-hand rule)").required().within(kMaxAngle),
+                                            }),
+                                 }))
+                        .items(1),
+                    vec3("pivot", "keyframes: the point their rotations turn about (length)")
+                        .within(kMaxLength)
+                        .fallback(vec3_json(defaults.pivot)),
                 });
 }
 

@@ -49,6 +49,7 @@ NewtonSolver::NewtonSolver(Objective& objective, const LinearSolverOptions& line
 
 bool NewtonSolver::ensure_factorization(const fem::State& state, const NodalVectors& full_gradient) {
   if (factorized_) return true;
+  if (objective_.dofs().num_dofs() == 0) return false;  // everything prescribed: nothing to factorize
   bool fresh;
   {
     PhaseTimer watch(times_.forces_and_stiffness, objective_);
