@@ -40,9 +40,10 @@ constexpr int kKills = 10;
 #endif
 
 /// Starts SINEW_BINARY with `arguments` (output to files in `directory`), sends `signal` after
-/// `delay` unless it ended before, and returns its wait status.
+/// `delay` unless it ended before, and returns its wait status. With `ready`, the delay counts
+/// from when that file exists (a run's lock file: it has stopped meshing and started the run).
 int run_and_signal(const std::vector<std::string>& arguments, const TempDir& directory, std::chrono::milliseconds delay,
-                   int signal) {
+                   int signal, const fs::path& ready = {}) {
   static int counter = 0;
   const std::string log = (directory / ("spawn_" + std::to_string(counter++) + ".txt")).string();
   posix_spawn_file_actions_t actions;
@@ -60,6 +61,12 @@ int run_and_signal(const std::vector<std::string>& arguments, const TempDir& dir
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0) return -1;
   int status = 0;
+  if (!ready.empty()) {
+    while (!fs::exists(ready)) {
+      if (waitpid(pid, &status, WNOHANG) == pid) return status;
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  }
   const auto until = std::chrono::steady_clock::now() + delay;
   while (std::chrono::steady_clock::now() < until) {
     if (waitpid(pid, &status, WNOHANG) == pid) return status;
@@ -208,11 +215,13 @@ TEST_F(Resume, SigintStopsADynamicRunWithItsOwnExitCodeAndACheckpointThatResumes
   const CommandResult full = run_sinew(arguments(reference), directory);
   ASSERT_EQ(full.exit_code, 0) << full.err;
 
-  // Interrupted while it steps (the meshing takes a moment first; a few tries cover a slow machine).
+  // Interrupted while it steps: once its first checkpoint is on disk (a few tries cover a machine
+  // so slow or so fast that the signal misses the stepping).
   int status = 0;
-  for (int delay_ms : {400, 250, 600, 150, 900}) {
+  for (int delay_ms : {30, 10, 60, 0}) {
     fs::remove_all(output);
-    status = run_and_signal(arguments(output), directory, std::chrono::milliseconds(delay_ms), SIGINT);
+    status = run_and_signal(arguments(output), directory, std::chrono::milliseconds(delay_ms), SIGINT,
+                            output / "checkpoint.cbor");
     if (WIFEXITED(status) && WEXITSTATUS(status) == 6 && fs::exists(output / "checkpoint.cbor")) break;
   }
   ASSERT_TRUE(WIFEXITED(status)) << "ended by a signal";
@@ -235,9 +244,11 @@ TEST_F(Resume, SigintStopsADynamicRunWithItsOwnExitCodeAndACheckpointThatResumes
 TEST_F(Resume, SigtermAlsoEndsTheRunGracefully) {
   write_text(scene_path, adaptive_blocks_scene().dump(2));
   int status = 0;
-  for (int delay_ms : {700, 400, 1000, 1500}) {
+  // After the run has taken its output directory (its handlers are installed a moment later).
+  for (int delay_ms : {100, 50, 200, 20}) {
     fs::remove_all(output);
-    status = run_and_signal(arguments(output), directory, std::chrono::milliseconds(delay_ms), SIGTERM);
+    status = run_and_signal(arguments(output), directory, std::chrono::milliseconds(delay_ms), SIGTERM,
+                            output / ".sinew.lock");
     if (WIFEXITED(status) && WEXITSTATUS(status) == 6) break;
   }
   ASSERT_TRUE(WIFEXITED(status)) << "ended by a signal";
