@@ -198,6 +198,10 @@ TEST(Checkpoint, MissingForeignOldAndDamagedFilesAreRefusedByName) {
   j["stepper"]["state"]["x"]["rows"] = 5;
   write_json(j);
   EXPECT_THAT(read_error(path), HasSubstr("it is damaged (\"x\" is not a 5 x 3 matrix)"));
+  j["stepper"]["state"]["x"]["rows"] = 1LL << 40;  // rows x cols would overflow
+  j["stepper"]["state"]["x"]["cols"] = 1LL << 40;
+  write_json(j);
+  EXPECT_THAT(read_error(path), HasSubstr("is not a 1099511627776 x 1099511627776 matrix"));
 }
 
 TEST(Checkpoint, ASnapshotOfAnotherModelDoesNotFit) {

@@ -42,8 +42,11 @@ MatrixX matrix_from(const json& j, const char* key) {
   const auto rows = field(m, "rows").get<long long>();
   const auto cols = field(m, "cols").get<long long>();
   const json& data = field(m, "data");
-  if (rows < 0 || cols < 0 || !data.is_binary() ||
-      data.get_binary().size() != static_cast<std::size_t>(rows * cols) * sizeof(double))
+  // The sizes are checked against the bytes there before they are multiplied (no overflow, no
+  // allocation beyond what the file holds).
+  const auto doubles = data.is_binary() ? static_cast<long long>(data.get_binary().size() / sizeof(double)) : -1;
+  if (rows < 0 || cols < 0 || doubles < 0 || data.get_binary().size() % sizeof(double) != 0 ||
+      (cols > 0 && rows > doubles / cols) || rows * cols != doubles)
     throw Malformed{fmt::format("\"{}\" is not a {} x {} matrix", key, rows, cols)};
   MatrixX out(rows, cols);
   if (out.size() > 0) std::memcpy(out.data(), data.get_binary().data(), data.get_binary().size());
