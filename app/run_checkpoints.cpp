@@ -4,13 +4,19 @@ namespace sinew::app {
 
 RunCheckpoints::RunCheckpoints(const model::Model& model, const RunOutput& output, int every,
                                std::uint64_t fingerprint)
-    : model_(model), output_(output), every_(every), fingerprint_(fingerprint) {}
+    : model_(model),
+      output_(output),
+      every_(every),
+      fingerprint_(fingerprint),
+      mesh_fingerprint_(model::mesh_fingerprint(model)) {}
 
 std::string RunCheckpoints::path() const { return output_.directory() + "/" + model::kCheckpointFile; }
 
 void RunCheckpoints::on_accepted(const solver::StepperSnapshot& snapshot) {
   if (!latest_) latest_.emplace();
   latest_->fingerprint = fingerprint_;
+  latest_->mesh_fingerprint = mesh_fingerprint_;
+  latest_->finished = false;
   latest_->snapshot = model::take_snapshot(model_, snapshot);
   latest_->counters = output_.counters();
   latest_->series = output_.series();
@@ -22,8 +28,12 @@ void RunCheckpoints::on_accepted(const solver::StepperSnapshot& snapshot) {
   if (due) write_latest();
 }
 
-bool RunCheckpoints::write_latest() {
+bool RunCheckpoints::write_latest(bool finished) {
   if (!latest_) return false;
+  if (finished && !latest_->finished) {
+    latest_->finished = true;
+    latest_written_ = false;
+  }
   if (!latest_written_) model::write_checkpoint(path(), *latest_);
   latest_written_ = true;
   return true;

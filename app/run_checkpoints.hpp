@@ -23,8 +23,10 @@ class RunCheckpoints {
   /// writes it when due. In dynamics a checkpoint is due only at an output time, when the CSV
   /// tables on disk hold every row it counts.
   void on_accepted(const solver::StepperSnapshot& snapshot);
-  /// Writes the latest snapshot unless it was written; false when no step was accepted.
-  bool write_latest();
+  /// Writes the latest snapshot unless it was written, marked as the end of a finished run when
+  /// `finished` (a later stage may start from it: docs/stages.md); false when no step was
+  /// accepted.
+  bool write_latest(bool finished = false);
   /// The latest snapshot, or null before the first accepted step.
   const model::RunSnapshot* latest() const { return latest_ ? &latest_->snapshot : nullptr; }
   std::string path() const;
@@ -34,6 +36,7 @@ class RunCheckpoints {
   const RunOutput& output_;
   int every_;
   std::uint64_t fingerprint_;
+  std::uint64_t mesh_fingerprint_;
   std::optional<model::Checkpoint> latest_;
   bool latest_written_ = false;
 };

@@ -139,7 +139,7 @@ RunReport solve_and_write(model::Model& model, RunOutput& output, const RunOptio
   report.message = report.result.message;
   if (!report.success) output.write_state("last_converged.vtu", report.result.last_state);
   output.write_summary(report.result, report.wall_seconds, model.name);
-  checkpoints.write_latest();  // after the tables are on disk: it counts their rows
+  checkpoints.write_latest(report.success);  // after the tables are on disk: it counts their rows
   const auto& r = report.result;
   const std::string split = phase_split(r.times, report.setup_seconds, report.wall_seconds);
   if (dynamic)
@@ -195,6 +195,9 @@ RunReport run_model(model::Model& model, const scene::OutputConfig& output_confi
                 problem.mesh.num_nodes(), problem.mesh.num_tets(), model.dofs->num_dofs(), problem.rigid_bodies.size(),
                 setup_seconds);
 
+  if (!model.started_from.empty())
+    logger().info("starting from the end of the run in {}{}", model.started_from,
+                  model.start_velocity.rows() > 0 ? " (its positions and velocities)" : " (its positions)");
   const io::OutputDirectoryLock lock(options.output_directory,
                                     {.overwrite = options.overwrite, .resume = resume_from != nullptr}, options.command);
   RunOutput output(options.output_directory, model, output_config);

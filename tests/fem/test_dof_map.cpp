@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "sinew/core/error.hpp"
@@ -113,6 +114,80 @@ TEST(DofMap, SyncSatisfiesPlanarConstraints) {
     const Vector3 expected = f.problem.rigid_bodies[0].motion.apply(f.problem.mesh.rest.row(a).transpose(), 0.5);
     EXPECT_NEAR((s.x.row(a).transpose() - expected).norm(), 0, 1e-13);
   }
+}
+
+/// The state a first stage of `kind` ends in: the problem synced to lambda = 1 with the free
+/// nodes displaced and the free rigid body turned.
+fem::State end_of_first_stage(const fem::DofMap& dofs, const fem::Problem& p) {
+  fem::State s = dofs.initial_state(1.0);
+  for (Index a = 0; a < p.mesh.num_nodes(); ++a)
+    if (dofs.kind(a) == fem::DofMap::NodeKind::Free) s.x.row(a) += Vector3(0.01 * a, -0.02, 0.03).transpose();
+  if (dofs.rigid_first_dof(0) >= 0) {
+    VectorX dq = VectorX::Zero(dofs.num_dofs());
+    dq.segment<6>(dofs.rigid_first_dof(0)) << 0.1, 0, -0.05, 0.2, -0.1, 0.3;
+    s = dofs.apply_step(s, dq, 1.0);
+  }
+  return s;
+}
+
+TEST(DofMap, AStartStateIsWhereMotionsAndPlanesStartFrom) {
+  for (auto kind : {fem::RigidBody::Kind::Prescribed, fem::RigidBody::Kind::Fixed, fem::RigidBody::Kind::Free}) {
+    SCOPED_TRACE(static_cast<int>(kind));
+    Fixture first(kind);
+    const fem::State start = end_of_first_stage(*first.dofs, first.problem);
+    Fixture second(kind);
+    second.dofs->set_start(start);
+    ASSERT_TRUE(second.dofs->has_start());
+    // At lambda 0 of the new stage: exactly the start state (the motions are 0 there, and
+    // every constraint is measured from the start).
+    const fem::State s0 = second.dofs->initial_state(0.0);
+    EXPECT_NEAR((s0.x - start.x).cwiseAbs().maxCoeff(), 0, 1e-14);
+    const auto& p = second.problem;
+    const fem::State s = second.dofs->initial_state(0.5);
+    // Planar nodes: their displacement in the plane's normal is measured from the start.
+    for (Index a : p.planar[0].nodes)
+      if (a != 0) {
+        EXPECT_NEAR(s.x(a, 0) - start.x(a, 0), 0.025, 1e-14);
+      }
+    // The pinned node stays where the first stage left it.
+    EXPECT_NEAR((s.x.row(0) - start.x.row(0)).norm(), 0, 1e-14);
+    // Rigid members: a prescribed body moves by its motion from its start pose, a fixed one
+    // stays, a free one starts at its pose.
+    const fem::RigidMotion& motion = p.rigid_bodies[0].motion;
+    for (Index a : second.dofs->rigid_members(0)) {
+      const Vector3 from = start.x.row(a).transpose();
+      const Vector3 expected = kind == fem::RigidBody::Kind::Prescribed ? motion.apply(from, 0.5) : from;
+      EXPECT_NEAR((s.x.row(a).transpose() - expected).norm(), 0, 1e-12) << "node " << a;
+    }
+  }
+}
+
+TEST(DofMap, RefusesAStartStateThatDoesNotFit) {
+  Fixture f(fem::RigidBody::Kind::Free);
+  fem::State start = f.dofs->initial_state(0.0);
+  fem::State fewer = start;
+  fewer.x.conservativeResize(start.x.rows() - 1, 3);
+  EXPECT_THROW(f.dofs->set_start(fewer), InputError);
+  fem::State no_bodies = start;
+  no_bodies.rigid.clear();
+  EXPECT_THROW(f.dofs->set_start(no_bodies), InputError);
+  fem::State not_finite = start;
+  not_finite.x(3, 1) = std::nan("");
+  EXPECT_THROW(f.dofs->set_start(not_finite), InputError);
+  // The rigid body's nodes deformed (it was deformable in the earlier run).
+  fem::State bent = start;
+  bent.x.row(f.dofs->rigid_members(0).front()) += Vector3(0, 0.1, 0).transpose();
+  try {
+    f.dofs->set_start(bent);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("rigid body \"bone\""), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("deformable"), std::string::npos) << e.what();
+  }
+  fem::State sheared = start;
+  sheared.rigid[0].R(0, 1) = 0.5;
+  EXPECT_THROW(f.dofs->set_start(sheared), InputError);
+  EXPECT_FALSE(f.dofs->has_start());
 }
 
 class DofMapDerivatives : public ::testing::TestWithParam<fem::RigidBody::Kind> {};

@@ -160,10 +160,42 @@ void DofMap::place_rigid_members(State& state, std::size_t r) const {
         (pose.R * (problem_.mesh.rest.row(a).transpose() - info.center) + info.center + pose.t).transpose();
 }
 
+const Positions& DofMap::start_positions() const { return has_start() ? start_x_ : problem_.mesh.rest; }
+
+void DofMap::set_start(const State& start) {
+  const Positions& X = problem_.mesh.rest;
+  if (start.x.rows() != X.rows() || start.x.cols() != 3)
+    throw InputError(fmt::format("the start state has {} node positions, the mesh has {} nodes", start.x.rows(), X.rows()));
+  if (start.rigid.size() != rigid_.size())
+    throw InputError(fmt::format("the start state has {} rigid bodies, the scene has {}", start.rigid.size(), rigid_.size()));
+  if (!start.x.allFinite()) throw InputError("the start state has positions that are not finite");
+  for (std::size_t r = 0; r < rigid_.size(); ++r) {
+    const RigidInfo& info = rigid_[r];
+    const RigidPose& pose = start.rigid[r];
+    if (!pose.R.allFinite() || !pose.t.allFinite() || !(pose.R.transpose() * pose.R).isIdentity(1e-9) ||
+        !(pose.R.determinant() > 0))
+      throw InputError(fmt::format("the start pose of rigid body \"{}\" is not a rotation and a translation",
+                                   problem_.rigid_bodies[r].name));
+    double size = 0, misfit = 0;
+    for (Index a : info.members) {
+      const Vector3 rest = X.row(a).transpose();
+      size = std::max(size, (rest - info.center).norm());
+      const Vector3 placed = pose.R * (rest - info.center) + info.center + pose.t;
+      misfit = std::max(misfit, (start.x.row(a).transpose() - placed).norm());
+    }
+    if (misfit > 1e-6 * std::max(size, 1e-300))
+      throw InputError(fmt::format("in the start state the nodes of rigid body \"{}\" are {:.3g} (length) away from a "
+                                   "rigid motion of its rest shape: was it deformable in the run it comes from?",
+                                   problem_.rigid_bodies[r].name, misfit));
+  }
+  start_x_ = start.x;
+  start_pose_ = start.rigid;
+}
+
 State DofMap::initial_state(double lambda) const {
   State state;
-  state.x = problem_.mesh.rest;
-  state.rigid.assign(rigid_.size(), RigidPose{});
+  state.x = start_positions();
+  state.rigid = has_start() ? start_pose_ : std::vector<RigidPose>(rigid_.size(), RigidPose{});
   sync(state, lambda);
   return state;
 }
@@ -178,7 +210,7 @@ double DofMap::largest_prescribed_turn(double from, double to) const {
 
 void DofMap::sync(State& state, double lambda) const {
   state.lambda = lambda;
-  const Positions& X = problem_.mesh.rest;
+  const Positions& X = start_positions();
   for (const PrescribedNodes& set : problem_.prescribed) {
     const Matrix3 R = set.motion.rotation(lambda);
     const Vector3 t = set.motion.offset(lambda);
@@ -187,10 +219,12 @@ void DofMap::sync(State& state, double lambda) const {
   for (std::size_t r = 0; r < rigid_.size(); ++r) {
     const RigidInfo& info = rigid_[r];
     if (info.kind != RigidBody::Kind::Free) {
+      // The motion applied to the start pose: x = M_R (R0 (X - c) + c + t0) + M_t.
+      const RigidPose start = has_start() ? start_pose_[r] : RigidPose{};
       const Matrix3 R = info.kind == RigidBody::Kind::Fixed ? Matrix3::Identity() : info.motion.rotation(lambda);
       const Vector3 offset = info.kind == RigidBody::Kind::Fixed ? Vector3::Zero() : info.motion.offset(lambda);
-      state.rigid[r].R = R;
-      state.rigid[r].t = R * info.center + offset - info.center;
+      state.rigid[r].R = R * start.R;
+      state.rigid[r].t = R * (info.center + start.t) + offset - info.center;
     }
     place_rigid_members(state, r);
   }

@@ -44,7 +44,17 @@ class DofMap {
   const Vector3& rigid_center(std::size_t r) const { return rigid_[r].center; }
   const std::vector<Index>& rigid_members(std::size_t r) const { return rigid_[r].members; }
 
-  /// Rest positions synced to lambda.
+  /// Makes `start` (#V x 3 positions and one pose per rigid body, e.g. the end of an earlier
+  /// run) the state the motions start from, instead of the rest state: a prescribed node moves
+  /// to R(lambda) x_start + t(lambda), a fixed rigid body stays at its start pose, a prescribed
+  /// one moves by its motion from its start pose, and a planar constraint's displacement is
+  /// measured from the start position. The rest state (the elements' reference) is unchanged.
+  /// Throws InputError when the sizes differ or a rigid body's nodes in `start` are not its
+  /// pose applied to its rest nodes (to 1e-6 of the body's size).
+  void set_start(const State& start);
+  /// The state the motions start from: the rest state, or the one set by set_start.
+  bool has_start() const { return start_x_.rows() > 0; }
+  /// The start state (rest positions, or those of set_start) synced to lambda.
   State initial_state(double lambda) const;
   /// Moves prescribed nodes and fixed/prescribed rigid bodies to lambda, projects planar nodes
   /// onto their planes at lambda, places free rigid bodies' members from their poses.
@@ -79,11 +89,15 @@ class DofMap {
     Index dof = -1;
   };
   void place_rigid_members(State& state, std::size_t r) const;
+  /// Positions the motions start from: the rest positions, or start_x_.
+  const Positions& start_positions() const;
 
   const Problem& problem_;
   std::vector<NodeInfo> node_;
   std::vector<RigidInfo> rigid_;
   Index num_dofs_ = 0;
+  Positions start_x_;                   ///< #V x 3 after set_start, else 0 rows
+  std::vector<RigidPose> start_pose_;   ///< one per rigid body (identity without set_start)
 
 };
 

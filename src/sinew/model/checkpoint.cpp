@@ -130,6 +130,8 @@ json checkpoint_json(const Checkpoint& c) {
   return {{"format", kFormat},
           {"version", kVersion},
           {"fingerprint", c.fingerprint},
+          {"mesh_fingerprint", c.mesh_fingerprint},
+          {"finished", c.finished},
           {"stepper",
            {{"state", state_json(s.state)},
             {"t", s.t},
@@ -151,6 +153,9 @@ json checkpoint_json(const Checkpoint& c) {
 Checkpoint checkpoint_from(const json& j) {
   Checkpoint c;
   c.fingerprint = field(j, "fingerprint").get<std::uint64_t>();
+  // Absent from the checkpoints of sinew before sequential stages: those can still resume.
+  if (j.contains("mesh_fingerprint")) c.mesh_fingerprint = j.at("mesh_fingerprint").get<std::uint64_t>();
+  if (j.contains("finished")) c.finished = j.at("finished").get<bool>();
   const json& s = field(j, "stepper");
   solver::StepperSnapshot& snapshot = c.snapshot.stepper;
   snapshot.state = state_from(field(s, "state"));
@@ -249,6 +254,20 @@ std::uint64_t model_fingerprint(const Model& model, std::string_view scene_text)
   const long long counts[2] = {static_cast<long long>(model.dofs->num_dofs()),
                                static_cast<long long>(model.problem->rigid_bodies.size())};
   h.add(counts, sizeof(counts));
+  // A later stage is another run when the state it starts from changed.
+  if (model.dofs->has_start()) {
+    const fem::State start = model.dofs->initial_state(0.0);
+    h.add_matrix(start.x);
+    if (model.start_velocity.rows() > 0) h.add_matrix(model.start_velocity);
+  }
+  return h.hash;
+}
+
+std::uint64_t mesh_fingerprint(const Model& model) {
+  Fnv1a h;
+  const mesh::TetMesh& mesh = model.problem->mesh;
+  h.add_matrix(mesh.rest);
+  h.add_matrix(mesh.tets);
   return h.hash;
 }
 

@@ -32,6 +32,12 @@ RunSnapshot take_snapshot(const Model& model, const solver::StepperSnapshot& ste
 /// of the outputs needs to go on (its own counters and the series of written VTU files).
 struct Checkpoint {
   std::uint64_t fingerprint = 0;  ///< model_fingerprint of the run's model
+  /// mesh_fingerprint of the run's meshes: a later stage starting from this run checks that its
+  /// meshes are the same (0 in checkpoints of sinew before sequential stages).
+  std::uint64_t mesh_fingerprint = 0;
+  /// The run reached its end (the last checkpoint of a finished run); a later stage starts only
+  /// from a finished run.
+  bool finished = false;
   RunSnapshot snapshot;
   /// The output writer's counters by name (rows of each CSV table at the snapshot).
   std::map<std::string, long long> counters;
@@ -52,6 +58,10 @@ Checkpoint read_checkpoint(const std::string& path);
 /// A 64-bit hash of what makes two runs the same run: `scene_text` (the scene file and the
 /// command-line overrides) and the model's meshes (rest positions, tets, regions) and unknowns.
 std::uint64_t model_fingerprint(const Model& model, std::string_view scene_text);
+
+/// A 64-bit hash of the model's meshes alone (rest positions and tets): what a later stage must
+/// share with the run it starts from.
+std::uint64_t mesh_fingerprint(const Model& model);
 
 /// Throws InputError unless `snapshot` fits `model` (node, rigid-body and unknown counts, contact
 /// bodies and surface nodes): `source` names the checkpoint in the message.

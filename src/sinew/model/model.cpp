@@ -11,6 +11,7 @@
 #include "sinew/fem/mass_matrix.hpp"
 #include "sinew/fem/stable_time_step.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
+#include "sinew/model/stage_start.hpp"
 #include "sinew/scene/build_problem.hpp"
 
 namespace sinew::model {
@@ -178,6 +179,7 @@ Model build_model(const scene::SceneConfig& scene) {
       fem::lumped_masses(mesh.rest, mesh.tets, mesh.region, problem.region_density), problem.gravity,
       dynamic ? fem::Amplitude{{{0.0, 1.0}}} : fem::Amplitude{}, problem.forces, mesh.num_nodes());
   if (dynamic) model.dynamics = make_dynamics(scene.dynamics, problem, model.tet_material, *model.elastic);
+  if (!scene.initial_state.empty()) start_from_run(model, scene.initial_state);
   if (model.contact_setup) {
     const MatrixX mu = friction_coefficients(scene.contact, model.contact_setup->body_names);
     if (mu.size() > 0 && mu.maxCoeff() > 0) {

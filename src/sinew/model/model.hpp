@@ -62,6 +62,11 @@ struct Model {
   int friction_max_updates = 5;
   double friction_tolerance = 0.01;
   std::optional<Dynamics> dynamics;                 ///< none for a static analysis
+  /// Nodal velocities (#V x 3, length / time) a dynamic stage with inertia starts with, taken
+  /// from the dynamic run it starts from (stage_start.hpp); 0 rows: it starts at rest.
+  NodalVectors start_velocity;
+  /// Output directory of the run this model starts from (stage_start.hpp); empty: from rest.
+  std::string started_from;
   std::unique_ptr<solver::Objective> objective;     ///< Σ of the terms above, seen through the DofMap
   solver::StaticSolverOptions solver;               ///< the scene's linear solver, Newton and load stepping
   /// Characteristic length, reference force and quasi-viscosity per node (solver/newton_solver.hpp).

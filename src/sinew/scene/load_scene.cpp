@@ -58,6 +58,7 @@ class SceneReader {
     config.units = scene.at("units").get<std::string>();
     config.base_directory = base_directory_;
     if (scene.contains("data_dir")) config.data_directory = resolve(scene.at("data_dir").get<std::string>());
+    if (scene.contains("initial_state")) config.initial_state = resolve(scene.at("initial_state").get<std::string>());
 
     for (const auto& [name, material] : scene.at("materials").items()) {
       config.materials[name] = read_material(material, json_path_key("materials", name));

@@ -214,6 +214,9 @@ struct SceneConfig {
   /// Directory of surface files: the scene's data_dir resolved against base_directory (or the
   /// command line's --data-dir); empty = base_directory.
   std::string data_directory;
+  /// Output directory of the finished run this scene starts from (docs/stages.md), resolved
+  /// against base_directory; empty = the rest state.
+  std::string initial_state;
   std::map<std::string, material::MaterialSpec> materials;
   std::vector<BodyConfig> bodies;
   std::vector<BoundaryConditionConfig> boundary_conditions;

@@ -32,6 +32,13 @@ Schema build_scene_schema() {
                                   "directory of surface files (relative: to the scene file's directory); the command "
                                   "line's --data-dir replaces it")
                                .non_empty(),
+                           string("initial_state",
+                                  "output directory (relative: to the scene file's directory) of a finished run of "
+                                  "the same meshes this scene starts from: its final positions, rigid-body poses "
+                                  "and, between dynamic runs with inertia, velocities; motions, planar constraints "
+                                  "and fixed parts start from there, the rest state stays the meshes' "
+                                  "(docs/stages.md)")
+                               .non_empty(),
                            map("materials", "material name -> law and parameters", material_schema())
                                .fallback(json::object()),
                            array("bodies", "the solids", body_schema()).required().items(1),
