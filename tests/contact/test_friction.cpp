@@ -173,5 +173,32 @@ TEST(FrictionEnergy, BadCoefficientsAndThresholdsAreRefused) {
             std::string::npos);
 }
 
+TEST(FrictionEnergy, ASlipVelocityThresholdSetsTheSlipThresholdOfEveryTimeStep) {
+  const st::TwoBoxes boxes = st::two_boxes(2, Vector3(0.55, 0.3, -0.2), 0.4, 7.0, false);
+  ContactEnergy contact(boxes.geometry, {});
+  FrictionEnergy rate(contact, {MatrixX::Constant(2, 2, 0.3), 0.05, 2.0});
+  EXPECT_EQ(rate.options().slip_threshold, 0.05);  // before the first step
+  rate.set_time_step(0.01);
+  EXPECT_DOUBLE_EQ(rate.options().slip_threshold, 0.02);
+  rate.begin_step(boxes.x);
+  const Positions slid = moved(boxes.x, 0.004, 3);
+  const double at_small_step = rate.value(slid);
+  rate.set_time_step(0.001);  // a cut step: ten times smaller threshold, a stiffer stick
+  EXPECT_DOUBLE_EQ(rate.options().slip_threshold, 0.002);
+  EXPECT_NE(rate.value(slid), at_small_step);
+  rate.set_time_step(0);  // ignored (not a step)
+  EXPECT_DOUBLE_EQ(rate.options().slip_threshold, 0.002);
+  // Without a velocity threshold the length stays.
+  FrictionEnergy length(contact, {MatrixX::Constant(2, 2, 0.3), 0.05});
+  length.set_time_step(0.01);
+  EXPECT_EQ(length.options().slip_threshold, 0.05);
+  try {
+    FrictionEnergy bad(contact, {MatrixX::Constant(2, 2, 0.3), 0.05, -1.0});
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("slip velocity threshold -1"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace sinew::contact

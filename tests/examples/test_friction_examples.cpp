@@ -5,12 +5,16 @@
 /// stays below the slip threshold (the smoothed law's creep) and it does not accelerate. The
 /// friction force over the normal force is μ while it slides. And Puso and Laursen's ironing
 /// problem (examples/ironing.json, coarsened): in steady sliding the friction force is μ times the
-/// normal contact force within 3 %.
+/// normal contact force within 3 %. A slip threshold in velocity units keeps the creep of the stuck
+/// block at the same velocity whatever the time step.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
 
 #include "examples/example_support.hpp"
 
@@ -27,9 +31,12 @@ struct Incline {
   CsvTable steps;
 };
 
-/// Runs the example with gravity tilted by theta (degrees) and friction coefficient mu.
-Incline run_incline(double theta_deg, double mu, const TempDir& directory, const std::string& name) {
+/// Runs the example with gravity tilted by theta (degrees) and friction coefficient mu, after
+/// `change` (if any) changed its configuration.
+Incline run_incline(double theta_deg, double mu, const TempDir& directory, const std::string& name,
+                    const std::function<void(scene::SceneConfig&)>& change = {}) {
   scene::SceneConfig config = scene::load_scene_file(example_path("block-on-incline").string());
+  if (change) change(config);
   const double theta = theta_deg * M_PI / 180;
   config.loads.gravity = Vector3(kG * std::sin(theta), 0, -kG * std::cos(theta));
   config.contact.friction.coefficient = mu;
@@ -56,6 +63,9 @@ Incline run_incline(double theta_deg, double mu, const TempDir& directory, const
   result.travel = x.back() - x.front();
   return result;
 }
+
+/// The simulated time of a run (s).
+double config_end_time(const Incline& r) { return r.run.config.dynamics.options.end_time; }
 
 TEST(FrictionExamples, BlockSlidesDownTheInclineWithCoulombsAcceleration) {
   TempDir directory;
@@ -97,6 +107,31 @@ TEST(FrictionExamples, BlockSticksWhenTheSlopeIsBelowTheFrictionAngle) {
   const double ratio = r.steps.at(last, "contact.ground.block.friction_fx") /
                        std::abs(r.steps.at(last, "contact.ground.block.fz"));
   EXPECT_NEAR(ratio, std::tan(10.0 * M_PI / 180), 0.01);  // static friction balances the slope
+}
+
+TEST(FrictionExamples, ASlipVelocityThresholdBoundsTheCreepWhateverTheTimeStep) {
+  // Stuck at 10 degrees (tan = 0.176 < mu = 0.3). A threshold in length creeps the same length
+  // per step, so its creep velocity grows as the step shrinks (2.9 mm/s at 1 ms, 10.9 at
+  // 0.25 ms measured); a threshold in velocity, eps_v h per step, creeps at the same velocity
+  // (0.36 eps_v, the smoothed law's stick: f1(s) = tan / mu) whatever the step.
+  TempDir directory;
+  const double eps_v = 0.5;  // mm/s
+  std::vector<double> creep;
+  for (const double h : {1e-3, 2.5e-4}) {
+    const std::string name = "incline-stick-velocity-" + std::to_string(static_cast<int>(1e5 * h));
+    const Incline r = run_incline(10.0, 0.3, directory, name, [&](scene::SceneConfig& config) {
+      config.contact.friction.slip_velocity_threshold = eps_v;
+      config.dynamics.options.time_step = config.dynamics.options.max_time_step = h;
+    });
+    ASSERT_TRUE(r.run.report.success) << r.run.report.message;
+    creep.push_back(r.travel / config_end_time(r));
+    std::printf("[ example  ] block on incline, theta 10, mu 0.3, slip velocity %.2f mm/s, h %.2g s: creep %.4f mm/s\n",
+                eps_v, h, creep.back());
+    EXPECT_GT(creep.back(), 0);
+    EXPECT_LT(creep.back(), 0.5 * eps_v);
+    EXPECT_LT(std::abs(r.acceleration), 1e-3 * kG * std::sin(10.0 * M_PI / 180));
+  }
+  EXPECT_NEAR(creep[1], creep[0], 0.02 * creep[0]);
 }
 
 TEST(FrictionExamples, IroningDieSlidesWithFrictionMuTimesTheNormalForce) {

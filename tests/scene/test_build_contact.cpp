@@ -430,5 +430,23 @@ TEST(ContactEnforcementScene, InconsistentChoicesAreRefusedWithTheirPath) {
               HasSubstr("contact.enforcement.method: explicit integration keeps the penalty it started with"));
 }
 
+TEST(FrictionScene, ASlipVelocityThresholdIsForDynamicsAndExcludesASlipLength) {
+  using ::testing::HasSubstr;
+  nlohmann::json scene = testing::minimal_scene();
+  scene["contact"] = nlohmann::json::parse(R"({"friction": {"coefficient": 0.3, "slip_velocity_threshold": 0.5}})");
+  EXPECT_THAT(testing::parse_error(scene, ""),
+              HasSubstr("contact.friction.slip_velocity_threshold: a slip velocity needs time steps"));
+  scene["dynamics"] = nlohmann::json::parse(R"({"integrator": "implicit-euler", "end_time": 1, "output_interval": 0.5})");
+  const SceneConfig config = parse_scene(scene, "");
+  EXPECT_EQ(config.contact.friction.slip_velocity_threshold.value_or(0), 0.5);
+  EXPECT_FALSE(config.contact.friction.slip_threshold.has_value());
+  scene["contact"]["friction"]["slip_threshold"] = 0.01;
+  EXPECT_THAT(testing::parse_error(scene, ""),
+              HasSubstr("give either slip_threshold (length) or slip_velocity_threshold (length / time), not both"));
+  scene["contact"]["friction"].erase("slip_threshold");
+  scene["contact"]["friction"]["slip_velocity_threshold"] = -2;
+  EXPECT_THAT(testing::parse_error(scene, ""), HasSubstr("contact.friction.slip_velocity_threshold"));
+}
+
 }  // namespace
 }  // namespace sinew::scene

@@ -129,6 +129,14 @@ FrictionEnergy::FrictionEnergy(ContactEnergy& contact, FrictionOptions options)
                                      a, b, mu(a, b)));
   if (!std::isfinite(options_.slip_threshold) || !(options_.slip_threshold > 0))
     throw InputError(fmt::format("friction slip threshold {} must be finite and > 0", options_.slip_threshold));
+  if (!std::isfinite(options_.slip_velocity_threshold) || options_.slip_velocity_threshold < 0)
+    throw InputError(fmt::format("friction slip velocity threshold {} must be finite and >= 0",
+                                 options_.slip_velocity_threshold));
+}
+
+void FrictionEnergy::set_time_step(double h) {
+  if (options_.slip_velocity_threshold > 0 && h > 0 && std::isfinite(h))
+    options_.slip_threshold = options_.slip_velocity_threshold * h;
 }
 
 std::array<Index, 7> FrictionEnergy::nodes(const FrictionPoint& p) const {

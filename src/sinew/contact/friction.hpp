@@ -44,6 +44,10 @@ struct FrictionPoint {
 struct FrictionOptions {
   MatrixX mu;                     ///< #B x #B symmetric friction coefficients (>= 0)
   double slip_threshold = 0;      ///< ε_u (L, > 0): below this tangential slip per step, f0 is quadratic
+  /// ε_v (L / T, >= 0): when > 0, time stepping sets ε_u = ε_v h for every step of size h
+  /// (set_time_step), so that what sticks creeps slower than ε_v whatever the step; slip_threshold
+  /// is then only the value before the first step.
+  double slip_velocity_threshold = 0;
 };
 
 /// The lagged friction points of the pairs of `contact` at its current configuration (the
@@ -68,6 +72,8 @@ class FrictionEnergy final : public Energy {
   /// A step starts from x: x̂ = x and the points are lagged at x (the contact term, listed
   /// before this one in the objective, has its pairs at x).
   void begin_step(const Positions& x) override;
+  /// With a slip velocity threshold ε_v: ε_u = ε_v h for the step of size h (time) that follows.
+  void set_time_step(double h) override;
   std::uint64_t pattern_revision() const override { return revision_; }
 
   /// Lags the points again at x (a converged state of the current step), keeping x̂. Returns

@@ -37,6 +37,9 @@ class Energy {
   virtual bool is_valid(const Positions& /*x*/) const { return true; }
   /// The load parameter lambda in [0, 1] (statics) or time (dynamics) changed.
   virtual void set_load_parameter(double /*lambda*/) {}
+  /// Time stepping: the size h (time, > 0) of the step about to be attempted, before its
+  /// begin_step (terms with a rate-dependent setting, such as a slip velocity, scale it by h).
+  virtual void set_time_step(double /*h*/) {}
   /// True when the Hessian has nothing to add (linear terms).
   virtual bool has_hessian() const { return true; }
 

@@ -185,7 +185,8 @@ Model build_model(const scene::SceneConfig& scene) {
     if (mu.size() > 0 && mu.maxCoeff() > 0) {
       const scene::FrictionConfig& f = scene.contact.friction;
       model.friction_options = contact::FrictionOptions{
-          mu, f.slip_threshold.value_or(1e-3 * contact::mean_surface_edge(model.contact_setup->geometry, mesh.rest))};
+          mu, f.slip_threshold.value_or(1e-3 * contact::mean_surface_edge(model.contact_setup->geometry, mesh.rest)),
+          f.slip_velocity_threshold.value_or(0)};
       model.friction_max_updates = f.max_updates;
       model.friction_tolerance = f.tolerance;
     }

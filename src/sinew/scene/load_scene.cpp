@@ -316,6 +316,16 @@ class SceneReader {
     const json& friction = j.at("friction");
     contact.friction.coefficient = friction.at("coefficient").get<double>();
     if (friction.contains("slip_threshold")) contact.friction.slip_threshold = friction.at("slip_threshold").get<double>();
+    if (friction.contains("slip_velocity_threshold")) {
+      contact.friction.slip_velocity_threshold = friction.at("slip_velocity_threshold").get<double>();
+      if (contact.friction.slip_threshold)
+        error("contact.friction.slip_velocity_threshold",
+              "give either slip_threshold (length) or slip_velocity_threshold (length / time), not both");
+      if (!(end_time_ > 0))
+        error("contact.friction.slip_velocity_threshold",
+              "a slip velocity needs time steps: give a \"dynamics\" section, or slip_threshold (length) in a static "
+              "analysis");
+    }
     contact.friction.max_updates = friction.at("max_updates").get<int>();
     contact.friction.tolerance = friction.at("tolerance").get<double>();
     std::vector<std::string> body_names;

@@ -155,6 +155,9 @@ struct ContactPairConfig {
 struct FrictionConfig {
   double coefficient = 0;                 ///< μ of every pair without its own (0: frictionless)
   std::optional<double> slip_threshold;   ///< length; absent: 1e-3 of the mean contact-surface edge
+  /// length / time, dynamics only: the slip threshold of each time step is this times its size
+  /// (excludes slip_threshold).
+  std::optional<double> slip_velocity_threshold;
   int max_updates = 5;                    ///< lag refreshes per step at most
   double tolerance = 0.01;                ///< relative change of the total normal force that ends them
 };

@@ -57,6 +57,12 @@ SchemaNode contact_schema() {
                             "the contact surfaces")
                          .above(0)
                          .max(kMaxLength),
+                     number("slip_velocity_threshold",
+                            "dynamics: a slip threshold in velocity units (length / time); each time step of size h "
+                            "uses slip_threshold = this * h, so that what sticks creeps slower than this whatever "
+                            "the step size; instead of slip_threshold")
+                         .above(0)
+                         .max(kMaxLength),
                      integer("max_updates", "refreshes of the lagged normal forces per step at most")
                          .min(0)
                          .max(100)

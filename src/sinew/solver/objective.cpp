@@ -29,6 +29,10 @@ void Objective::update_terms(const fem::State& state) {
   collision_seconds_ += seconds_since(start);
 }
 
+void Objective::set_time_step(double h) {
+  for (auto* term : terms_) term->set_time_step(h);
+}
+
 void Objective::begin_step(const fem::State& state) {
   if (!state.x.allFinite()) return;
   const auto start = std::chrono::steady_clock::now();

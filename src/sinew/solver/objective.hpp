@@ -17,6 +17,8 @@ class Objective {
   Objective(const fem::DofMap& dofs, std::vector<Energy*> terms, Index num_nodes);
 
   void set_load_parameter(double lambda);
+  /// Time stepping: the size (time) of the step about to be attempted (Energy::set_time_step).
+  void set_time_step(double h);
   /// A load or time step starts at `state`: terms rebuild their acceleration structures.
   void begin_step(const fem::State& state);
   /// Sum of the terms; +inf when any term or validity check says the state is illegal.

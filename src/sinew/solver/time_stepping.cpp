@@ -41,7 +41,8 @@ class ImplicitTimeStepping final : public StepScheme {
   fem::State predict(const fem::State& current, double t, double t_new, NewtonSolver&) override {
     const double h = t_new - t;
     // From the converged state: terms that lag quantities per step (friction) take it as the
-    // step's start.
+    // step's start, and the step's size.
+    objective_.set_time_step(h);
     objective_.begin_step(current);
     fem::State trial = current;
     const double lambda = std::min(1.0, t_new / end_time_);
