@@ -8,6 +8,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -87,6 +88,8 @@ TEST(StageStart, TwoStaticStagesEndWhereOneRunEnds) {
   const solver::StepperResult two = solve_model(model);
   ASSERT_TRUE(two.success) << two.message;
   const double size = 10;
+  std::printf("[ stages   ] two static stages against one run: largest position difference %.3g mm\n",
+              (two.last_state.x - one.last_state.x).cwiseAbs().maxCoeff());
   EXPECT_LT((two.last_state.x - one.last_state.x).cwiseAbs().maxCoeff(), 1e-7 * size);
   // The elements' reference is still the mesh: the displacement from rest is the whole way.
   const Positions& rest = model.problem->mesh.rest;
@@ -125,6 +128,8 @@ TEST(StageStart, ADynamicStageGoesOnWithTheVelocitiesItStartsWith) {
   ASSERT_TRUE(two.success) << two.message;
   // Free fall: 0.5 g t^2 = 196 mm by t = 0.2 (implicit Euler a little more); a stage that
   // started at rest would have fallen 49 + 49 mm instead.
+  std::printf("[ stages   ] two dynamic stages against one run: largest position difference %.3g mm, fall %.2f mm\n",
+              (two.last_state.x - one.last_state.x).cwiseAbs().maxCoeff(), -two.last_state.x.col(2).minCoeff());
   EXPECT_LT((two.last_state.x - one.last_state.x).cwiseAbs().maxCoeff(), 1e-9 * 200);
   EXPECT_LT(two.last_state.x.col(2).minCoeff(), -190);
   // A quasistatic stage does not take velocities.
