@@ -195,6 +195,17 @@ RunReport run_model(model::Model& model, const scene::OutputConfig& output_confi
                 problem.mesh.num_nodes(), problem.mesh.num_tets(), model.dofs->num_dofs(), problem.rigid_bodies.size(),
                 setup_seconds);
 
+  if (!model.started_from.empty()) {
+    // Writing a stage over the run it starts from would destroy that run (and with it the start
+    // that a --resume of the stage checks).
+    std::error_code start_error, output_error;
+    const auto start_run = std::filesystem::weakly_canonical(model.started_from, start_error);
+    const auto this_run = std::filesystem::weakly_canonical(options.output_directory, output_error);
+    if (!start_error && !output_error && start_run == this_run)
+      throw InputError(fmt::format("the output directory \"{}\" is the run this scene starts from (initial_state): "
+                                   "write this stage into another directory",
+                                   options.output_directory));
+  }
   if (!model.started_from.empty())
     logger().info("starting from the end of the run in {}{}", model.started_from,
                   model.start_velocity.rows() > 0 ? " (its positions and velocities)" : " (its positions)");

@@ -97,5 +97,17 @@ TEST_F(Stages, AStartThatCannotBeUsedIsRefusedBeforeAnythingIsWritten) {
   EXPECT_FALSE(fs::exists(directory / "second"));
 }
 
+TEST_F(Stages, AStageIsNotWrittenOverTheRunItStartsFrom) {
+  ASSERT_EQ(run(write_scene("first", 1, 2), "first").exit_code, 0);
+  const std::string steps = read_text(directory / "first" / "steps.csv");
+  const CommandResult result = run_sinew(
+      {"run", write_scene("second", 1, 2, "first").string(), "-o", (directory / "first").string(), "--overwrite",
+       "--no-progress"},
+      directory);
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.err, HasSubstr("is the run this scene starts from"));
+  EXPECT_EQ(read_text(directory / "first" / "steps.csv"), steps);
+}
+
 }  // namespace
 }  // namespace sinew::app_test

@@ -221,6 +221,22 @@ inline ExampleRun run_example(const std::string& name, const TempDir& directory)
   return run_config(scene::load_scene_file(example_path(name).string()), directory, name);
 }
 
+/// examples/falling-rods.json reduced for the suite: 2 of its 5 rows, 3 of its 7 columns (the
+/// rods over the middle of the bar) and the first 0.5 s, with an output every 0.1 s.
+inline scene::SceneConfig reduced_falling_rods() {
+  scene::SceneConfig config = scene::load_scene_file(example_path("falling-rods").string());
+  auto& rods = config.bodies.at(0).mesh.parts.at(0).shape.children;
+  if (config.bodies.at(0).name != "rods" || rods.size() != 35u)
+    throw std::runtime_error("examples/falling-rods.json: expected a body \"rods\" of 7 x 5 rods");
+  std::vector<mesh::Shape> kept;
+  for (int row = 0; row < 2; ++row)
+    for (int column = 2; column < 5; ++column) kept.push_back(rods.at(static_cast<std::size_t>(7 * row + column)));
+  rods = kept;
+  config.dynamics.options.end_time = 0.5;
+  config.dynamics.options.output_interval = 0.1;
+  return config;
+}
+
 /// What every successful run writes: a .pvd listing increment 0 (the rest state) and every
 /// increment with an existing .vtu each, steps.csv with one row per accepted step (lambda
 /// ending at 1), newton.csv, and summary.json saying success; no last_converged.vtu.

@@ -136,16 +136,7 @@ TEST(DynamicsExamples, SaggingBarsSettleOnTheStaticSolution) {
 // rows and the first 0.5 s: the rods swing down, the lowest ones hit the curved bar and the
 // upper ones fall on them. The full scene is examples/falling-rods.json (see the note).
 TEST(DynamicsExamples, FallingRodsHitTheBarWithBoundedPenetrationAndNoInvertedElement) {
-  scene::SceneConfig config = scene::load_scene_file(example_path("falling-rods").string());
-  ASSERT_EQ(config.bodies[0].name, "rods");
-  auto& rods = config.bodies[0].mesh.parts.at(0).shape.children;
-  ASSERT_EQ(rods.size(), 35u) << "7 x 5 rods";
-  std::vector<mesh::Shape> kept;
-  for (int row = 0; row < 2; ++row)
-    for (int column = 2; column < 5; ++column) kept.push_back(rods[static_cast<std::size_t>(7 * row + column)]);
-  rods = kept;
-  config.dynamics.options.end_time = 0.5;
-  config.dynamics.options.output_interval = 0.1;
+  const scene::SceneConfig config = reduced_falling_rods();
   TempDir directory;
   const ExampleRun run = run_config(config, directory, "falling-rods (2 x 3 rods, 0.5 s)");
   ASSERT_TRUE(run.report.success) << run.report.message;

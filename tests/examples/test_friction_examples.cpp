@@ -139,14 +139,7 @@ TEST(FrictionExamples, ASlipVelocityThresholdBoundsTheCreepWhateverTheTimeStep) 
 /// between every pair of bodies; returns the mean slide (mm) along the bar, between t = 0.2 and
 /// t = 0.5, of the rods' nodes that lie on the bar at the end.
 double rods_slide_along_the_bar(double mu, const TempDir& directory, double& friction_force) {
-  scene::SceneConfig config = scene::load_scene_file(example_path("falling-rods").string());
-  auto& rods = config.bodies.at(0).mesh.parts.at(0).shape.children;
-  std::vector<mesh::Shape> kept;
-  for (int row = 0; row < 2; ++row)
-    for (int column = 2; column < 5; ++column) kept.push_back(rods.at(static_cast<std::size_t>(7 * row + column)));
-  rods = kept;
-  config.dynamics.options.end_time = 0.5;
-  config.dynamics.options.output_interval = 0.1;
+  scene::SceneConfig config = reduced_falling_rods();
   config.contact.friction.coefficient = mu;
   const std::string name = "falling-rods-mu-" + std::to_string(static_cast<int>(10 * mu));
   const ExampleRun run = run_config(config, directory, name, name);

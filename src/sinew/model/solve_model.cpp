@@ -36,8 +36,10 @@ solver::StepperResult solve_model(Model& model, const solver::StepperCallbacks& 
   solver::NewtonSetup scales = model.scales;
   scales.node_viscosity.resize(0);  // quasi-viscosity is a device of load stepping
   return solver::solve_dynamic(*model.objective, {d.inertia.get(), d.viscosity.get()}, d.options, model.solver, scales,
-                               {.critical_time_step = d.critical_time_step, .initial_velocity = model.start_velocity, .resume = stepper}, callbacks,
-                               refinement.get());
+                               {.critical_time_step = d.critical_time_step,
+                                .initial_velocity = model.start_velocity,
+                                .resume = stepper},
+                               callbacks, refinement.get());
 }
 
 }  // namespace sinew::model
