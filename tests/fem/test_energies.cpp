@@ -119,3 +119,17 @@ TEST(ExternalForceEnergy, GravityUsesLumpedMassAndAmplitude) {
   EXPECT_LT((g + ext.forces()).norm(), 1e-14);
   EXPECT_NEAR(ext.value(p.mesh.rest), -(ext.forces().array() * p.mesh.rest.array()).sum(), 1e-12);
 }
+
+TEST(ExternalForceEnergy, NodalForcesGoInEqualOrGivenShares) {
+  auto p = st::box_problem(1, 1, 1, Vector3(0, 0, 0), Vector3(1, 1, 1), st::mooney_rivlin(), 1.0);
+  const Index n = p.mesh.num_nodes();
+  fem::NodalForce equal{"equal", {0, 1}, Vector3(0, 0, 2), {}, {}};
+  fem::NodalForce shared{"shared", {2, 3}, Vector3(4, 0, 0), {}, {0.25, 0.75}};
+  fem::ExternalForceEnergy ext(VectorX::Zero(n), Vector3::Zero(), {}, {equal, shared}, n);
+  ext.set_load_parameter(0.5);  // the default amplitude is the ramp
+  EXPECT_EQ(Vector3(ext.forces().row(0)), Vector3(0, 0, 0.5));
+  EXPECT_EQ(Vector3(ext.forces().row(1)), Vector3(0, 0, 0.5));
+  EXPECT_EQ(Vector3(ext.forces().row(2)), Vector3(0.5, 0, 0));
+  EXPECT_EQ(Vector3(ext.forces().row(3)), Vector3(1.5, 0, 0));
+  EXPECT_EQ(ext.forces().bottomRows(n - 4).norm(), 0);
+}

@@ -48,12 +48,14 @@ inline constexpr NameTable<RigidBody::Kind, 3> kRigidKindNames{{
 }};
 constexpr const auto& enum_names(RigidBody::Kind) { return kRigidKindNames; }
 
-/// A constant force distributed equally over a node set (total force, force unit).
+/// A constant (dead) force distributed over a node set (total force, force unit): in equal
+/// shares, or in the given shares (a traction: each node's tributary boundary area).
 struct NodalForce {
   std::string name;
   std::vector<Index> nodes;
   Vector3 total_force = Vector3::Zero();
   Amplitude amplitude;
+  std::vector<double> shares;  ///< per entry of `nodes`, summing to 1; empty: equal shares
 };
 
 }  // namespace sinew::fem

@@ -31,8 +31,10 @@ void ExternalForceEnergy::set_load_parameter(double lambda) {
   for (Index a = 0; a < current_.rows(); ++a) current_.row(a) = mass_[a] * g.transpose();
   for (const auto& f : nodal_forces_) {
     if (f.nodes.empty()) continue;
-    const Vector3 share = f.amplitude(lambda) * f.total_force / static_cast<double>(f.nodes.size());
-    for (Index a : f.nodes) current_.row(a) += share.transpose();
+    const Vector3 force = f.amplitude(lambda) * f.total_force;
+    const double equal_share = 1.0 / static_cast<double>(f.nodes.size());
+    for (std::size_t i = 0; i < f.nodes.size(); ++i)
+      current_.row(f.nodes[i]) += (f.shares.empty() ? equal_share : f.shares[i]) * force.transpose();
   }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 /// @file external_force_energy.hpp
-/// Potential of dead loads: E = -f(lambda) . x, with f = a_g(lambda) m g + sum of nodal forces.
+/// Potential of dead loads: E = -f(lambda) . x, with f = a_g(lambda) m g + sum of nodal forces
+/// (each NodalForce spread over its nodes in equal or given shares).
 /// Gravity uses the lumped nodal mass (mass unit).
 
 #include <vector>

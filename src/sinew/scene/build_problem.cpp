@@ -4,6 +4,7 @@
 #include "sinew/scene/build_problem.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -91,7 +92,9 @@ class ProblemBuilder {
     for (std::size_t i = 0; i < scene_.loads.forces.size(); ++i) {
       const ForceConfig& force = scene_.loads.forces[i];
       const std::string path = json_path_key(json_path_index("loads.forces", i), "nodes");
-      problem_.forces.push_back({force.name, resolve(force.nodes, path, bodies), force.total_force, force.amplitude});
+      fem::NodalForce nodal{force.name, resolve(force.nodes, path, bodies), force.total_force, force.amplitude, {}};
+      if (force.traction) spread_traction(*force.traction, nodal, path);
+      problem_.forces.push_back(std::move(nodal));
     }
     problem_.gravity = scene_.loads.gravity;
     throw_if_errors();
@@ -107,6 +110,7 @@ class ProblemBuilder {
   std::vector<int> prescribed_by_;   ///< per node: boundary condition index, or -1
   std::vector<int> rigid_body_of_;   ///< per node: rigid body index, or -1
   std::vector<std::string> rigid_paths_;  ///< per rigid body: the path of its region entry
+  Triangles boundary_faces_;              ///< of the whole mesh, computed for the first traction
 
   void error(const std::string& path, const std::string& message) { errors_.push_back(path + ": " + message); }
 
@@ -118,6 +122,38 @@ class ProblemBuilder {
   }
 
   static std::string body_path(std::size_t b) { return json_path_index("bodies", b); }
+
+  /// A traction (force / rest area) on the boundary faces whose three nodes are all in `force`:
+  /// the total force and each node's share (a third of the area of each such face it belongs to).
+  void spread_traction(const Vector3& traction, fem::NodalForce& force, const std::string& path) {
+    if (boundary_faces_.rows() == 0) boundary_faces_ = mesh::boundary_triangles(problem_.mesh.tets);
+    std::map<Index, std::size_t> entry_of;
+    for (std::size_t i = 0; i < force.nodes.size(); ++i) entry_of.emplace(force.nodes[i], i);
+    std::vector<double> area_of_entry(force.nodes.size(), 0.0);
+    double area = 0;
+    for (Index f = 0; f < boundary_faces_.rows(); ++f) {
+      std::array<std::size_t, 3> entries{};
+      bool selected = true;
+      for (int k = 0; k < 3 && selected; ++k) {
+        const auto it = entry_of.find(boundary_faces_(f, k));
+        selected = it != entry_of.end();
+        if (selected) entries[static_cast<std::size_t>(k)] = it->second;
+      }
+      if (!selected) continue;
+      const auto& x = problem_.mesh.rest;
+      const Vector3 a = x.row(boundary_faces_(f, 0)), b = x.row(boundary_faces_(f, 1)), c = x.row(boundary_faces_(f, 2));
+      const double face_area = 0.5 * (b - a).cross(c - a).norm();
+      for (std::size_t entry : entries) area_of_entry[entry] += face_area / 3.0;
+      area += face_area;
+    }
+    if (!(area > 0)) {
+      error(path, "selects no whole boundary face: a traction acts on the boundary faces whose three nodes are all selected");
+      return;
+    }
+    force.total_force = area * traction;
+    force.shares.resize(force.nodes.size());
+    for (std::size_t i = 0; i < force.nodes.size(); ++i) force.shares[i] = area_of_entry[i] / area;
+  }
 
   PlacedBody place_body(std::size_t b) {
     const BodyConfig& config = scene_.bodies[b];

@@ -107,7 +107,13 @@ class SceneReader {
       ForceConfig f;
       f.name = force.at("name").get<std::string>();
       f.nodes = read_selector(force.at("nodes"), json_path_key(path, "nodes"), config);
-      f.total_force = to_vector3(force.at("total_force"));
+      if (force.contains("total_force") == force.contains("traction")) {
+        error(path, "give either total_force (force, in equal nodal shares) or traction (force per area on the selected boundary faces)");
+      } else if (force.contains("traction")) {
+        f.traction = to_vector3(force.at("traction"));
+      } else {
+        f.total_force = to_vector3(force.at("total_force"));
+      }
       if (force.contains("amplitude")) f.amplitude = read_amplitude(force.at("amplitude"), json_path_key(path, "amplitude"), errors);
       if (!force_names.insert(f.name).second) error(json_path_key(path, "name"), "duplicate force name " + json(f.name).dump());
       config.loads.forces.push_back(std::move(f));

@@ -131,10 +131,13 @@ inline constexpr NameTable<BoundaryConditionConfig::Kind, 3> kBoundaryConditionK
 }};
 constexpr const auto& enum_names(BoundaryConditionConfig::Kind) { return kBoundaryConditionKindNames; }
 
+/// A dead load on a node set: a total force in equal nodal shares, or a traction (force per
+/// rest area) over the boundary faces whose three nodes are all selected.
 struct ForceConfig {
   std::string name;
   NodeSelector nodes;
-  Vector3 total_force = Vector3::Zero();
+  Vector3 total_force = Vector3::Zero();  ///< force; unused when `traction` is given
+  std::optional<Vector3> traction;        ///< force / length^2 on the rest area
   fem::Amplitude amplitude;
 };
 

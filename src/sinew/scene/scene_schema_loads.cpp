@@ -42,12 +42,13 @@ SchemaNode loads_schema() {
   return object("loads", "external loads",
                 {
                     vec3("gravity", "gravitational acceleration (length / time^2)").within(kMaxPhysical).fallback(vec3_json(defaults.gravity)),
-                    array("forces", "forces spread equally over node sets",
+                    array("forces", "dead loads: a total force spread equally over a node set, or a traction over the boundary faces it covers",
                           object("", "a force",
                                  {
                                      string("name", "name, used in logs").required().non_empty(),
                                      ref("nodes", "the loaded nodes", "node_selector").required(),
-                                     vec3("total_force", "total force over all selected nodes (force)").required().within(kMaxPhysical),
+                                     vec3("total_force", "total force over all selected nodes, in equal shares (force); give this or traction").within(kMaxPhysical),
+                                     vec3("traction", "force per rest area on the boundary faces whose three nodes are all selected, each node taking a third of each face's force (force / length^2); give this or total_force").within(kMaxPhysical),
                                      ref("amplitude", "factor applied to the force", "amplitude"),
                                  }))
                         .fallback(json::array()),
