@@ -1,10 +1,13 @@
 // run_stepper on its own: segments, step halving and growth, the minimum step, the two start
 // modes and the two growth rules, driven by a scheme that makes every step longer than a
-// threshold fail (its Newton start is an inverted state) on uniaxial tension.
+// threshold fail (its Newton start is an inverted state) on uniaxial tension; and a refinement
+// whose re-solve fails: tried again with a softer change, or the step keeps its converged state.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include "sinew/solver/stepper.hpp"
@@ -239,4 +242,88 @@ TEST(Stepper, AResumedRunGoesOnFromEverySnapshotExactlyAsTheUninterruptedOne) {
     EXPECT_EQ(ends, std::vector<double>(segment_ends.begin() + static_cast<std::ptrdiff_t>(reported + 1),
                                         segment_ends.end()));
   }
+}
+
+namespace {
+
+/// A refinement whose one outer iteration asks for a load the step cannot reach in the Newton
+/// budget (load parameter 3: 400 times the force); retry_softer() then asks for load parameter 2
+/// (1.5 times the force) when `soften`, or goes back to the step's own load.
+class OverreachingRefinement final : public solver::StepRefinement {
+ public:
+  OverreachingRefinement(solver::Objective& objective, bool soften) : objective_(objective), soften_(soften) {}
+  bool refine(const fem::State&) override {
+    if (refined_) return false;
+    refined_ = true;
+    objective_.set_load_parameter(3);
+    return true;
+  }
+  bool retry_softer() override {
+    ++retries;
+    objective_.set_load_parameter(soften_ && retries == 1 ? 2 : 1);
+    return soften_ && retries == 1;
+  }
+  void accept(const fem::State&) override {}
+  void reject() override {}
+  int retries = 0;
+
+ private:
+  solver::Objective& objective_;
+  bool soften_;
+  bool refined_ = false;
+};
+
+/// The unit cube on rollers pulled by a force on its x = 1 face with `amplitude`, in one step of
+/// at most 6 Newton iterations, with `refinement` (null: none) built on the rig's objective.
+solver::StepperResult run_pulled_cube(const fem::Amplitude& amplitude,
+                                      const std::function<std::unique_ptr<solver::StepRefinement>(solver::Objective&)>&
+                                          make_refinement = {}) {
+  auto p = st::box_problem(3, 2, 2, Vector3(0, 0, 0), Vector3(1, 1, 1), st::mooney_rivlin(0.5, 0.2, 1.5));
+  p.planar.push_back({"x0", st::nodes_on_plane(p.mesh, 0, 0.0), Vector3::UnitX(), 0.0, {}});
+  p.planar.push_back({"y0", st::nodes_on_plane(p.mesh, 1, 0.0), Vector3::UnitY(), 0.0, {}});
+  p.planar.push_back({"z0", st::nodes_on_plane(p.mesh, 2, 0.0), Vector3::UnitZ(), 0.0, {}});
+  p.forces.push_back({"pull", st::nodes_on_plane(p.mesh, 0, 1.0), Vector3(0.2, 0, 0), amplitude, {}});
+  st::SolverRig rig(std::move(p));
+  solver::NewtonSolver newton(*rig.objective, {}, {.characteristic_length = std::sqrt(3.0), .reference_force = 1.0});
+  ThresholdScheme scheme(*rig.objective, 1.0);
+  solver::StepperOptions options;
+  options.end = options.segment_length = options.first_step = options.max_step = 1;
+  options.newton.max_iterations = 6;
+  const auto refinement = make_refinement ? make_refinement(*rig.objective) : nullptr;
+  return solver::run_stepper(newton, scheme, options, {}, refinement.get());
+}
+
+fem::Amplitude amplitude_of(std::vector<std::pair<double, double>> points) {
+  fem::Amplitude amplitude;
+  amplitude.points = std::move(points);
+  return amplitude;
+}
+
+}  // namespace
+
+TEST(Stepper, AReSolveThatFailsAfterARefinementIsTriedAgainWithASofterChange) {
+  const fem::Amplitude amplitude = amplitude_of({{0, 0}, {1, 1}, {2, 1.5}, {3, 400}});
+  const solver::StepperResult refined = run_pulled_cube(amplitude, [](solver::Objective& objective) {
+    return std::make_unique<OverreachingRefinement>(objective, true);
+  });
+  ASSERT_TRUE(refined.success) << refined.message;
+  EXPECT_EQ(refined.cuts, 0);
+  EXPECT_EQ(refined.refinements, 2);  // the failed re-solve and the softer one
+  // The step ends where the softer load (1.5 times the force) puts it.
+  const solver::StepperResult direct = run_pulled_cube(amplitude_of({{0, 0}, {1, 1.5}}));
+  ASSERT_TRUE(direct.success) << direct.message;
+  EXPECT_LT((refined.last_state.x - direct.last_state.x).cwiseAbs().maxCoeff(), 1e-8);
+}
+
+TEST(Stepper, WithNothingSofterLeftTheStepKeepsTheStateItHadConvergedTo) {
+  const fem::Amplitude amplitude = amplitude_of({{0, 0}, {1, 1}, {2, 1.5}, {3, 400}});
+  const solver::StepperResult refined = run_pulled_cube(amplitude, [](solver::Objective& objective) {
+    return std::make_unique<OverreachingRefinement>(objective, false);
+  });
+  ASSERT_TRUE(refined.success) << refined.message;
+  EXPECT_EQ(refined.cuts, 0);
+  EXPECT_EQ(refined.refinements, 1);
+  const solver::StepperResult direct = run_pulled_cube(amplitude_of({{0, 0}, {1, 1}}));
+  ASSERT_TRUE(direct.success) << direct.message;
+  EXPECT_EQ(refined.last_state.x, direct.last_state.x);
 }

@@ -18,13 +18,19 @@ ContactRefinement::ContactRefinement(contact::ContactEnergy& contact, contact::C
 }
 
 bool ContactRefinement::refine(const fem::State& converged) {
+  if (exhausted_) return false;
   bool again = false;
+  updated_ = false;
   if (options_.method == contact::ContactEnforcement::AugmentedLagrangian) {
     contact_.update(converged.x);
     last_max_penetration_ = contact::contact_report(contact_.collisions()).max_penetration;
     if (last_max_penetration_ > options_.penetration_tolerance && updates_ < options_.max_updates) {
-      contact_.set_pressure(contact::updated_contact_pressure(contact_.collisions()));
+      previous_pressure_ = contact_.pressure();
+      updated_pressure_ = contact::updated_contact_pressure(contact_.collisions());
+      update_fraction_ = 1;
+      contact_.set_pressure(updated_pressure_);
       ++updates_;
+      updated_ = true;
       again = true;
     }
   }
@@ -39,9 +45,31 @@ bool ContactRefinement::refine(const fem::State& converged) {
   return again;
 }
 
+bool ContactRefinement::retry_softer() {
+  constexpr double kSmallestFraction = 1.0 / 8;
+  if (updated_ && update_fraction_ > kSmallestFraction) {
+    update_fraction_ /= 2;
+    // Pressures of nodes that left contact (0 in the update) are blended too: the update is a
+    // vector of nodal values over all nodes.
+    const VectorX previous =
+        previous_pressure_.size() == updated_pressure_.size() ? previous_pressure_ : VectorX::Zero(updated_pressure_.size());
+    contact_.set_pressure(previous + update_fraction_ * (updated_pressure_ - previous));
+    logger().info("contact: no convergence after the multiplier update {}: trying {} of it", updates_, update_fraction_);
+    return true;
+  }
+  if (updated_) contact_.set_pressure(previous_pressure_);
+  exhausted_ = true;
+  logger().warn("contact: no convergence after the {} update of this step; the step keeps its last converged state "
+                "(largest penetration {:.3g}, tolerance {:.3g})",
+                updated_ ? "multiplier" : "friction", last_max_penetration_, options_.penetration_tolerance);
+  return false;
+}
+
 void ContactRefinement::accept(const fem::State& state) {
   updates_ = 0;
   friction_updates_ = 0;
+  exhausted_ = false;
+  updated_ = false;
   accepted_pressure_ = contact_.pressure();
   if (options_.method != contact::ContactEnforcement::AdaptivePenalty) return;
   const contact::ContactReport report = contact::contact_report(contact_, state.x);
@@ -64,6 +92,8 @@ void ContactRefinement::restore_pressure(const VectorX& pressure) {
 void ContactRefinement::reject() {
   updates_ = 0;
   friction_updates_ = 0;
+  exhausted_ = false;
+  updated_ = false;
   contact_.set_pressure(accepted_pressure_);
 }
 

@@ -32,6 +32,12 @@ class ContactRefinement final : public solver::StepRefinement {
   /// to solve the step again (the pressures were updated, or the total normal force changed by
   /// more than the refresh tolerance and the step has had fewer than max_updates refreshes).
   bool refine(const fem::State& converged) override;
+  /// The re-solve after the last refine() failed. Augmented Lagrangian: halves the last update of
+  /// the pressures (at most three times: 1/2, 1/4, 1/8 of it) and returns true; then restores the
+  /// pressures before it, ends the refinement of this step (refine() returns false until the
+  /// next step), logs a warning with the penetration left, and returns false. Friction refreshes
+  /// alone are not halved: false at once.
+  bool retry_softer() override;
   /// Keeps the pressures for the next step; adaptive penalty: grows the penalties of the body
   /// pairs that penetrate more than the tolerance at `state`.
   void accept(const fem::State& state) override;
@@ -49,6 +55,11 @@ class ContactRefinement final : public solver::StepRefinement {
   contact::FrictionEnergy* friction_;
   FrictionRefresh refresh_;
   int updates_ = 0;           ///< multiplier updates in the current step
+  bool exhausted_ = false;    ///< a re-solve failed and nothing smaller is left: no more updates this step
+  bool updated_ = false;      ///< the last refine() updated the pressures
+  VectorX previous_pressure_;  ///< before the last update
+  VectorX updated_pressure_;   ///< the last update's full pressures
+  double update_fraction_ = 1;  ///< of the last update, now in the objective
   int friction_updates_ = 0;  ///< friction refreshes that asked for a re-solve in the current step
   VectorX accepted_pressure_;
   double last_max_penetration_ = 0;

@@ -118,12 +118,21 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
       NewtonResult solved = newton.solve(trial, newton_options, on_iteration);
       result.newton_iterations += solved.iterations;
       int iterations = solved.iterations;
-      // The refinement's outer iterations: solve the step again from its converged state.
+      // The refinement's outer iterations: solve the step again from its converged state. A
+      // re-solve that fails goes back to that state for a smaller change of the objective, or
+      // keeps it when there is none.
       while (solved.converged && refinement && refinement->refine(trial)) {
-        ++attempt.refinements;
-        solved = newton.solve(trial, newton_options, on_iteration);
-        result.newton_iterations += solved.iterations;
-        iterations += solved.iterations;
+        const fem::State converged_state = trial;
+        const NewtonResult converged_solve = solved;
+        do {
+          ++attempt.refinements;
+          solved = newton.solve(trial, newton_options, on_iteration);
+          result.newton_iterations += solved.iterations;
+          iterations += solved.iterations;
+          if (solved.converged) break;
+          trial = converged_state;
+        } while (refinement->retry_softer());
+        if (!solved.converged) solved = converged_solve;
       }
       if (solved.converged) {
         if (refinement) refinement->accept(trial);

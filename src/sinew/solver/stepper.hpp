@@ -166,14 +166,21 @@ class StepScheme {
 /// An outer iteration around each step's Newton solve: augmented Lagrangian multiplier updates,
 /// penalty growth between steps (contact_enforcement.hpp). The stepper calls refine() with each
 /// converged state of a step; when it returns true the objective was changed and the step is
-/// solved again from that state (the refinement bounds how often). A step that then fails is cut
-/// as any other, after reject().
+/// solved again from that state (the refinement bounds how often). When that re-solve fails, the
+/// stepper goes back to the converged state and calls retry_softer(): a smaller change to solve
+/// again, or none, and the step keeps the state it had converged to. A step whose first solve
+/// fails is cut as any other, after reject().
 class StepRefinement {
  public:
   virtual ~StepRefinement() = default;
   /// `converged` solves the current step: true when the objective was changed and the step
   /// must be solved again.
   virtual bool refine(const fem::State& converged) = 0;
+  /// The solve after the last refine() failed. True after changing the objective by less than
+  /// that refine() did (solve again from the state it was given); false when nothing smaller is
+  /// left: the objective is back to the one that state solved, refine() returns false for the
+  /// rest of the step, and the stepper accepts that state (a refreshed friction lag stays).
+  virtual bool retry_softer() { return false; }
   /// The step was accepted at `state` (changes for the next step go here).
   virtual void accept(const fem::State& state) = 0;
   /// The step failed: restore the objective as it was at the last accept (or the start).
