@@ -230,7 +230,10 @@ TEST(FrictionExamples, IroningDieSlidesWithFrictionMuTimesTheNormalForce) {
 }
 
 /// The affine map x = A X + b fitted by least squares to the nodes `rows` of a state; the largest
-/// distance of those nodes from it in `residual`.
+/// distance of those nodes from it in `residual`. Normal equations in fixed-size matrices: libgmsh
+/// instantiates Eigen's dynamic-size decompositions too (its fullMatrix::luSolve uses
+/// ColPivHouseholderQR<MatrixXd>), and an instantiation of ours would take the place of its own,
+/// with allocations that do not match under AddressSanitizer (a bad free inside Gmsh's meshing).
 struct AffineFit {
   Eigen::Matrix3d A;
   Eigen::Vector3d b;
@@ -240,17 +243,21 @@ struct AffineFit {
 
 AffineFit fit_affine(const VtuState& state, const std::vector<Eigen::Index>& rows) {
   const Eigen::MatrixXd X = state.rest();
-  Eigen::MatrixXd design(static_cast<Eigen::Index>(rows.size()), 4), target(static_cast<Eigen::Index>(rows.size()), 3);
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const auto r = static_cast<Eigen::Index>(i);
-    design.row(r) << X(rows[i], 0), X(rows[i], 1), X(rows[i], 2), 1;
-    target.row(r) = state.x.row(rows[i]);
+  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+  Eigen::Matrix<double, 4, 3> right = Eigen::Matrix<double, 4, 3>::Zero();
+  for (const Eigen::Index v : rows) {
+    const Eigen::Vector4d phi(X(v, 0), X(v, 1), X(v, 2), 1);
+    normal += phi * phi.transpose();
+    right += phi * state.x.row(v);
   }
-  const Eigen::MatrixXd coefficients = design.colPivHouseholderQr().solve(target);  // 4 x 3
+  const Eigen::Matrix<double, 4, 3> coefficients = normal.ldlt().solve(right);
   AffineFit fit;
-  fit.A = coefficients.topRows(3).transpose();
+  fit.A = coefficients.topRows<3>().transpose();
   fit.b = coefficients.row(3).transpose();
-  fit.residual = (design * coefficients - target).rowwise().norm().maxCoeff();
+  for (const Eigen::Index v : rows) {
+    const Eigen::Vector3d rest(X(v, 0), X(v, 1), X(v, 2));
+    fit.residual = std::max(fit.residual, (fit.at(rest) - state.x.row(v).transpose()).norm());
+  }
   return fit;
 }
 
