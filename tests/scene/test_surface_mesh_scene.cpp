@@ -23,7 +23,7 @@ json cube_scene(const std::string& data_dir) {
     "units": "mm, mN, kPa",
     "materials": {"gel": {"law": "neo-hookean", "mu": 1.0, "lambda": 10.0}},
     "bodies": [{"name": "block",
-      "mesh": {"surfaces": {"element_size": 2.5, "facet_distance": 0.05,
+      "mesh": {"surfaces": {"element_size": 2.5, "facet_distance": 0.2,
         "surfaces": {"cube": {"file": "cube.stl", "unit_scale": 10, "source": "the test writes it"}},
         "parts": [{"region": "core", "solid": {"capsule": {"a": [5, 5, 3], "b": [5, 5, 7], "radius": 2}}},
                   {"region": "box", "solid": {"surface": "cube"}}]}},
