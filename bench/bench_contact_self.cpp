@@ -345,7 +345,7 @@ class TimedLinearSolver final : public solver::LinearSolver {
 double timed_newton_direction(const fem::SparseMatrix& K, bool fresh, const VectorX& g, TimedLinearSolver& linear,
                               double shift_hint, Phases& ph) {
   linear.record_into(&ph);
-  const solver::Direction d = solver::newton_direction(K, fresh, g, linear, shift_hint);
+  const solver::Direction d = solver::newton_direction(K, fresh, g, linear, solver::ShiftStart{.first = shift_hint});
   linear.record_into(nullptr);
   ph.factorizations += d.factorizations;
   if (d.regularization > 0) ph.regularized += 1;

@@ -129,6 +129,7 @@ TEST(LoadScene, OmittedKeysTakeTheStructDefaults) {
   EXPECT_EQ(scene.solver.newton.max_line_search_steps, defaults.newton.max_line_search_steps);
   EXPECT_EQ(scene.solver.newton.quasi_viscosity, defaults.newton.quasi_viscosity);
   EXPECT_EQ(scene.solver.newton.project_element_hessians, defaults.newton.project_element_hessians);
+  EXPECT_EQ(scene.solver.newton.max_step_growth, defaults.newton.max_step_growth);
   EXPECT_EQ(scene.solver.linear.kind, defaults.linear.kind);
   EXPECT_EQ(scene.solver.linear.tolerance, defaults.linear.tolerance);
   EXPECT_EQ(scene.solver.linear.max_iterations, defaults.linear.max_iterations);
@@ -613,6 +614,14 @@ TEST(LoadSceneErrors, EveryBadKeyframeIsNamedByItsPath) {
   EXPECT_THAT(parse_error(scene), ::testing::HasSubstr("boundary_conditions[0].motion.keyframes[0].translation[0]"));
   scene["boundary_conditions"][0]["motion"] = json::parse(R"({"keyframes": []})");
   EXPECT_THAT(parse_error(scene), ::testing::HasSubstr("boundary_conditions[0].motion.keyframes"));
+}
+
+TEST(LoadSceneErrors, StepGrowthBelowOneIsRefused) {
+  json scene = minimal_scene();
+  scene["solver"] = {{"newton", {{"max_step_growth", 0.5}}}};
+  EXPECT_EQ(parse_error(scene), "solver.newton.max_step_growth: must be >= 1, got 0.5");
+  scene["solver"] = {{"newton", {{"max_step_growth", 1}}}};
+  EXPECT_EQ(parse_scene(scene, data_directory()).solver.newton.max_step_growth, 1.0);
 }
 
 }  // namespace

@@ -41,6 +41,7 @@ TEST(SceneSchema, DocumentedDefaultsEqualTheStructDefaults) {
   EXPECT_EQ(default_at("solver.newton.max_line_search_steps"), solver.newton.max_line_search_steps);
   EXPECT_EQ(default_at("solver.newton.quasi_viscosity"), solver.newton.quasi_viscosity);
   EXPECT_EQ(default_at("solver.newton.project_hessians"), solver.newton.project_element_hessians);
+  EXPECT_EQ(default_at("solver.newton.max_step_growth"), solver.newton.max_step_growth);
   EXPECT_EQ(default_at("solver.linear.solver"), name_of(solver.linear.kind));
   EXPECT_EQ(default_at("solver.linear.tolerance"), solver.linear.tolerance);
   EXPECT_EQ(default_at("solver.linear.max_iterations"), solver.linear.max_iterations);

@@ -40,6 +40,7 @@ solver::StaticSolverOptions read_solver(const json& j, ReadErrors& errors) {
   options.newton.max_line_search_steps = newton.at("max_line_search_steps").get<int>();
   options.newton.quasi_viscosity = newton.at("quasi_viscosity").get<double>();
   options.newton.project_element_hessians = newton.at("project_hessians").get<bool>();
+  options.newton.max_step_growth = newton.at("max_step_growth").get<double>();
   const json& linear = j.at("linear");
   options.linear.kind = read_name<solver::LinearSolverOptions::Kind>(linear, "solver", "solver.linear", errors);
   options.linear.tolerance = linear.at("tolerance").get<double>();

@@ -45,7 +45,8 @@ const std::string& scene_example_json() {
   "loads": {"gravity": [0, 0, -9.81], "forces": [{"name": "push", "nodes": {"body": "ball", "region": "ball"}, "total_force": [0, 0, -1]}]},
   "solver": {"increments": 10, "predictor": "two-point", "min_step": 1e-4, "growth": 2.0, "easy_iterations": 4,
              "newton": {"max_iterations": 25, "residual_tolerance": 1e-6, "increment_tolerance": 1e-6,
-                        "line_search": "energy", "max_line_search_steps": 30, "quasi_viscosity": 0, "project_hessians": false},
+                        "line_search": "energy", "max_line_search_steps": 30, "quasi_viscosity": 0, "project_hessians": false,
+                        "max_step_growth": 8},
              "linear": {"solver": "cholmod", "tolerance": 0.1, "max_iterations": 200, "gmres_restart": 50,
                         "lagged_iterations": 0, "lagged_tolerance": 1e-3}},
   "output": {"vtu": true, "every": 1}

@@ -71,6 +71,14 @@ SchemaNode solver_schema() {
                                 .max(kMaxPhysical)
                                 .min(0)
                                 .fallback(newton.quasi_viscosity),
+                            number("max_step_growth",
+                                   "after an accepted full Newton step along which the energy still falls steeply "
+                                   "(the slope at its end below 0.1 of the slope at its start), double the step while "
+                                   "the energy keeps falling, up to this factor: fewer iterations on exponential laws "
+                                   "that the predictor overstretched (docs/solver.md); 1 = off")
+                                .min(1)
+                                .max(1024)
+                                .fallback(newton.max_step_growth),
                             boolean("project_hessians",
                                     "project each element's dP/dF onto the positive semi-definite cone")
                                 .fallback(newton.project_element_hessians),

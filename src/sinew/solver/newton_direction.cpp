@@ -1,16 +1,17 @@
 #include "sinew/solver/newton_direction.hpp"
 
+#include <algorithm>
 #include <limits>
 
 namespace sinew::solver {
 
 Direction newton_direction(const SparseMatrix& K, bool fresh_pattern, const VectorX& g, LinearSolver& linear,
-                           double first_shift) {
+                           const ShiftStart& start) {
   Direction d;
   const int factorizations_before = linear.factorizations();
   if (fresh_pattern) linear.analyze(K);
   const VectorX diag = K.diagonal().cwiseAbs().cwiseMax(1e-300);
-  double shift = first_shift >= kSmallestShift ? first_shift : 0;
+  double shift = start.first >= kSmallestShift ? start.first : 0;
   SparseMatrix shifted;
   for (int attempt = 0; attempt < 12; ++attempt) {
     const SparseMatrix* M = &K;
@@ -31,7 +32,7 @@ Direction newton_direction(const SparseMatrix& K, bool fresh_pattern, const Vect
         return d;
       }
     }
-    shift = shift == 0 ? kSmallestShift : shift * 10;
+    shift = shift == 0 ? std::max(kSmallestShift, start.after_unshifted_failure) : shift * 10;
   }
   // Last resort: diagonally scaled steepest descent.
   d.dq = -g.cwiseQuotient(diag);

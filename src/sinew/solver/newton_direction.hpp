@@ -20,13 +20,20 @@ struct Direction {
 /// Smallest relative diagonal shift tried; below it a shift is no shift.
 inline constexpr double kSmallestShift = 1e-8;
 
+/// Where the search for a working shift starts. Every failed attempt costs a factorization, so
+/// callers start near the shifts that worked before (docs/solver.md, "Indefinite tangents").
+struct ShiftStart {
+  double first = 0;  ///< relative shift tried first (below kSmallestShift: the unshifted K)
+  /// Shift tried after the unshifted K failed (raised to kSmallestShift): the scale of the
+  /// shifts that worked lately, a tenth of the last one, instead of the smallest shift.
+  double after_unshifted_failure = kSmallestShift;
+};
+
 /// Solves K dq = -g (K: #q x #q, g: #q). When K cannot be factorized or the result is not a
 /// descent direction, retries with K + shift * |diag(K)|, the shift growing tenfold from
-/// `first_shift` (0: unshifted first, then kSmallestShift), at most 12 attempts, then falls back
-/// to diagonally scaled steepest descent. Every failed attempt costs a factorization, so callers
-/// pass a hint from the previous iteration when that one needed a shift. `fresh_pattern`: K's
-/// sparsity pattern is new and `linear` must analyze it first.
+/// `start` (see ShiftStart), at most 12 attempts, then falls back to diagonally scaled steepest
+/// descent. `fresh_pattern`: K's sparsity pattern is new and `linear` must analyze it first.
 Direction newton_direction(const SparseMatrix& K, bool fresh_pattern, const VectorX& g, LinearSolver& linear,
-                           double first_shift);
+                           const ShiftStart& start);
 
 }  // namespace sinew::solver

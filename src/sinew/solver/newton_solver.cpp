@@ -74,6 +74,31 @@ bool NewtonSolver::solve_with_last_factorization(const VectorX& rhs, VectorX& x)
   return linear_->solve(rhs, x).success;
 }
 
+double NewtonSolver::extrapolate(const fem::State& state, const VectorX& dq, double slope, double max_growth,
+                                 TrialPoint& point) {
+  const fem::DofMap& dofs = objective_.dofs();
+  const auto compute_gradient = [&](TrialPoint& p) {
+    PhaseTimer watch(times_.forces_and_stiffness, objective_);
+    p.full_g = objective_.full_gradient(p.state, &p.scale);
+    p.g = dofs.reduce_gradient(p.state, p.full_g);
+  };
+  if (point.full_g.rows() == 0) compute_gradient(point);  // needed by the next iteration anyway
+  double alpha = 1;
+  while (point.g.dot(dq) < kExtrapolationSlopeRatio * slope && 2 * alpha <= max_growth) {
+    TrialPoint longer;
+    {
+      PhaseTimer watch(times_.line_search, objective_);
+      longer.state = dofs.apply_step(state, dq, 2 * alpha);
+      longer.energy = objective_.value(longer.state);
+    }
+    if (!std::isfinite(longer.energy) || !(longer.energy < point.energy)) break;
+    compute_gradient(longer);
+    point = std::move(longer);
+    alpha *= 2;
+  }
+  return alpha;
+}
+
 NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options, const IterationCallback& on_iteration) {
   Objective& objective = objective_;
   PhaseTimes& times = times_;
@@ -149,12 +174,17 @@ NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options
       // Newton, near round-off for one; docs/solver.md, "Lagged factorizations").
       const bool stalling = it > 0 && residual > 0.5 * previous_residual;
       linear_->require_relative_residual(stalling ? 0.0 : 1.0);
-      direction = newton_direction(K_, fresh, g, *linear_, shift_hint);
+      direction = newton_direction(K_, fresh, g, *linear_,
+                                   ShiftStart{.first = shift_hint, .after_unshifted_failure = last_shift_ / 10});
     }
     linear_iterations_ += direction.linear_iterations;
     factorized_ = true;  // of K_ or a shifted K_: good enough for a predictor
     // An indefinite tangent usually stays indefinite for a few iterations: start the next
     // search a hundredfold below the shift that worked instead of from zero.
+    // The scale for the next climb from an unshifted failure: the shift this climb reached (not
+    // the decaying hints that follow it, which succeed at ever smaller shifts).
+    if (shift_hint == 0 && direction.regularization > 0 && std::isfinite(direction.regularization))
+      last_shift_ = direction.regularization;
     shift_hint = std::isfinite(direction.regularization) ? direction.regularization / 100 : 0;
     const double slope = g.dot(direction.dq);
 
@@ -198,6 +228,15 @@ NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options
           "line search failed: no legal, decreasing step after {} halvings (residual {:.3e})",
           options.max_line_search_steps, residual);
       return result;
+    }
+    if (options.line_search == NewtonOptions::LineSearchRule::Energy && halvings == 0 && options.max_step_growth > 1) {
+      TrialPoint point{std::move(trial), trial_energy, std::move(trial_full_g), std::move(trial_g), trial_scale};
+      alpha = extrapolate(state, direction.dq, slope, options.max_step_growth, point);
+      trial = std::move(point.state);
+      trial_energy = point.energy;
+      trial_full_g = std::move(point.full_g);
+      trial_g = std::move(point.g);
+      trial_scale = point.scale;
     }
     increment = largest_displacement(trial, state);
     state = std::move(trial);

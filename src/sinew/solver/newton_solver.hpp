@@ -121,6 +121,21 @@ class NewtonSolver {
   LinearCounts counts() const;
 
  private:
+  /// A point of the line search: the state, its energy and (once computed) its gradient.
+  struct TrialPoint {
+    fem::State state;
+    double energy = 0;
+    NodalVectors full_g;  ///< #V x 3; 0 rows until computed
+    VectorX g;            ///< #q
+    double scale = 0;     ///< force scale at `state`
+  };
+  /// After the full step `point` = state + dq was accepted: while the energy's slope along dq at
+  /// the point is below kExtrapolationSlopeRatio x `slope` (the slope at `state`, < 0), tries the
+  /// doubled step and keeps it when it is legal and lowers the energy, up to `max_growth` x dq.
+  /// Returns the step length taken (1 when nothing better was found); `point` holds its
+  /// gradient on return.
+  double extrapolate(const fem::State& state, const VectorX& dq, double slope, double max_growth, TrialPoint& point);
+
   Objective& objective_;
   std::unique_ptr<LinearSolver> linear_;
   SparseMatrix K_;
@@ -128,6 +143,10 @@ class NewtonSolver {
   NewtonSetup setup_;
   PhaseTimes times_;
   int linear_iterations_ = 0;
+  /// The shift the last climb from an unshifted failure reached (0: none yet), kept
+  /// between solves: a tangent that turns indefinite again usually needs a shift of that scale,
+  /// and climbing tenfold from the smallest shift costs up to ten failed factorizations.
+  double last_shift_ = 0;
 };
 
 }  // namespace sinew::solver

@@ -38,7 +38,17 @@ struct NewtonOptions {
   double quasi_viscosity = 0;
   /// Project each element's dP/dF onto the positive semi-definite cone before assembly.
   bool project_element_hessians = false;
+  /// Energy rule only: when the full Newton step is accepted and the energy still falls steeply
+  /// along the direction at its end (slope there below kExtrapolationSlopeRatio of the slope at
+  /// the start), the step is doubled while the energy keeps falling, up to this factor. Newton on
+  /// an exponential law that a predictor has overstretched (Veronda-Westmann, beta = 8) removes
+  /// only about 1/beta of the overshoot per full step, dividing the residual by e each time;
+  /// longer steps skip those iterations (docs/solver.md, "Extrapolated steps"). 1 = off.
+  double max_step_growth = 8;
 };
+
+/// See NewtonOptions::max_step_growth.
+inline constexpr double kExtrapolationSlopeRatio = 0.1;
 
 struct LoadSteppingOptions {
   enum class Predictor { None, TwoPoint, Tangent };
