@@ -11,6 +11,7 @@
 
 #include "sinew/material/material.hpp"
 #include "sinew/material/material_spec.hpp"
+#include "sinew/solver/newton_direction.hpp"
 #include "sinew/solver/newton_solver.hpp"
 #include "support/solver_rig.hpp"
 
@@ -188,7 +189,29 @@ TEST(NewtonSolver, ConvergedStepsAreNotExtrapolated) {
   Started s;
   solver::NewtonSolver newton(*s.rig.objective, {}, kUnitCube);
   std::vector<solver::IterationRecord> records;
-  const solver::NewtonResult result = newton.solve(s.state, tight(), [&](const auto& it) { records.push_back(it); });
+  solver::NewtonOptions options = tight();
+  options.max_step_growth = 8;  // on (the default is off)
+  const solver::NewtonResult result = newton.solve(s.state, options, [&](const auto& it) { records.push_back(it); });
   ASSERT_TRUE(result.converged) << result.failure;
   for (std::size_t k = 1; k < records.size(); ++k) EXPECT_LE(records[k].step_length, 1.0) << "iteration " << k;
+}
+
+TEST(NewtonDirection, StartingAfterAnUnshiftedFailureNearTheLastShiftSavesFactorizations) {
+  // Indefinite (det = 0.5 - 0.81 < 0); K + s diag(K) is positive definite for s > 0.273.
+  fem::SparseMatrix K(2, 2);
+  K.insert(0, 0) = 1.0;
+  K.insert(0, 1) = 0.9;
+  K.insert(1, 0) = 0.9;
+  K.insert(1, 1) = 0.5;
+  const VectorX g = VectorX::Ones(2);
+  auto from_smallest = solver::make_linear_solver({});
+  auto from_last = solver::make_linear_solver({});
+  const solver::Direction climbed = solver::newton_direction(K, true, g, *from_smallest, solver::ShiftStart{});
+  const solver::Direction started =
+      solver::newton_direction(K, true, g, *from_last, solver::ShiftStart{.after_unshifted_failure = 0.1});
+  EXPECT_EQ(climbed.regularization, 1.0);
+  EXPECT_EQ(started.regularization, 1.0);
+  EXPECT_EQ(climbed.attempts, 10);  // 0, 1e-8, ..., 1
+  EXPECT_EQ(started.attempts, 3);   // 0, 0.1, 1
+  EXPECT_LT((climbed.dq - started.dq).norm(), 1e-12);
 }

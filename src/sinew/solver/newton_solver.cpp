@@ -179,12 +179,12 @@ NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options
     }
     linear_iterations_ += direction.linear_iterations;
     factorized_ = true;  // of K_ or a shifted K_: good enough for a predictor
-    // An indefinite tangent usually stays indefinite for a few iterations: start the next
-    // search a hundredfold below the shift that worked instead of from zero.
     // The scale for the next climb from an unshifted failure: the shift this climb reached (not
     // the decaying hints that follow it, which succeed at ever smaller shifts).
     if (shift_hint == 0 && direction.regularization > 0 && std::isfinite(direction.regularization))
       last_shift_ = direction.regularization;
+    // An indefinite tangent usually stays indefinite for a few iterations: start the next
+    // search a hundredfold below the shift that worked instead of from zero.
     shift_hint = std::isfinite(direction.regularization) ? direction.regularization / 100 : 0;
     const double slope = g.dot(direction.dq);
 
