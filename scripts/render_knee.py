@@ -14,6 +14,8 @@ Writes into DIR (default OUTPUT_DIR):
                      coloured by material depth (the seed's Figs. 42-46); rigid parts in grey
   knee_fold.png      a close-up of that section behind the knee, where the skin folds onto itself,
                      with the contact pressure
+  knee_rest.png      the same section at rest (the first increment), coloured by region: which
+                     tissue fills the leg where, and where it is empty (white)
 Orthographic projection with the painter's algorithm (matplotlib only, no OpenGL). Needs
 Debian's python3-matplotlib, python3-numpy and python3-meshio.
 """
@@ -29,9 +31,14 @@ import meshio  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
-REGION_COLOURS = ["#b0b0b0", "#d9d9d9", "#5a8dd6", "#2f5fb3", "#c25cc2", "#5cb85c", "#e6c229", "#f2c9a0"]
+# The generated leg's regions: femur, tibia, patella, ligament, tendon, graded_2, graded_1, muscle,
+# skin (scripts/make_knee.py, whose docstring names these colours).
+REGION_COLOURS = ["#b0b0b0", "#d9d9d9", "#5a8dd6", "#2f5fb3", "#2f5fb3", "#c25cc2", "#5cb85c", "#e6c229",
+                  "#f2c9a0"]
+SKIN_SIDE_COLOUR = "#b0b0b0"  # the side view's translucent skin
 # The VH leg's regions: femur, tibia, patella, ligament, tendon, graded_2, graded_1, muscle, skin
 # (scripts/make_vh_knee.py).
+REGION_NAMES = ["femur", "tibia", "patella", "ligament", "tendon", "graded_2", "graded_1", "muscle", "skin-fat"]
 VH_REGION_COLOURS = ["#b0b0b0", "#d9d9d9", "#a0a0a0", "#2f5fb3", "#2f5fb3", "#c25cc2", "#5cb85c", "#d98c6a",
                      "#f2c9a0"]
 
@@ -90,7 +97,8 @@ def draw_side(ax, mesh, title):
     colours = []
     for f, t, s in zip(faces, owner, light):
         r = region[t]
-        base = np.array(matplotlib.colors.to_rgb(REGION_COLOURS[r % len(REGION_COLOURS)]))
+        colour = SKIN_SIDE_COLOUR if r == skin_region else REGION_COLOURS[r % len(REGION_COLOURS)]
+        base = np.array(matplotlib.colors.to_rgb(colour))
         alpha = 0.35 if r == skin_region else 1.0
         colours.append((*(base * s), alpha))
     ax.add_collection(PolyCollection(p[faces][:, :, [FRAME.across, FRAME.up]], facecolors=colours, edgecolors="none"))
@@ -160,6 +168,25 @@ def draw_section(ax, mesh, field, label, window=None, cmap="turbo_r"):
     ax.set_ylabel(FRAME.labels[1])
 
 
+def draw_regions(ax, mesh):
+    """The frame's section coloured by region (rigid parts too), with a legend of the regions cut."""
+    polys, _, owners = section(mesh, "material_depth")
+    region = np.asarray(mesh.cell_data_dict["region"]["tetra"]).reshape(-1).astype(int)[owners]
+    colours = [REGION_COLOURS[r % len(REGION_COLOURS)] for r in region]
+    ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors="k", linewidths=0.08))
+    names = REGION_NAMES  # the VH leg's regions are the same, in the same order
+    for r in sorted(set(region)):
+        ax.plot([], [], "s", color=REGION_COLOURS[r % len(REGION_COLOURS)], markersize=8,
+                label=names[r] if r < len(names) else f"region {r}")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=8, frameon=False)
+    allp = np.concatenate(polys)
+    ax.set_xlim(allp[:, 0].min() - 5, allp[:, 0].max() + 5)
+    ax.set_ylim(allp[:, 1].min() - 5, allp[:, 1].max() + 5)
+    ax.set_aspect("equal")
+    ax.set_xlabel(FRAME.labels[0])
+    ax.set_ylabel(FRAME.labels[1])
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("directory")
@@ -209,8 +236,14 @@ def main():
     fig.tight_layout()
     fig.savefig(out / "knee_fold.png", dpi=110)
     plt.close(fig)
+    fig, ax = plt.subplots(figsize=(7.5, 7))
+    draw_regions(ax, meshio.read(series[0][1]))
+    ax.set_title(f"section at rest ({lambdas[0] * args.flexion:.0f}° flexion), coloured by region", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(out / "knee_rest.png", dpi=110)
+    plt.close(fig)
     print(f"wrote knee_side.png ({', '.join(f'{lambdas[k] * args.flexion:.0f}°' for k in picks)}), "
-          f"knee_cutaway.png and knee_fold.png to {out}")
+          f"knee_cutaway.png, knee_fold.png and knee_rest.png to {out}")
 
 
 if __name__ == "__main__":
