@@ -1,12 +1,20 @@
 /// @file test_contact_refinement.cpp
 /// The augmented Lagrangian's outer iteration (model/contact_refinement.hpp) when a re-solve
 /// fails: retry_softer() offers half, a quarter and an eighth of the last multiplier update, then
-/// restores the pressures before it and ends the updates of the step until the next one.
+/// restores the pressures before it and ends the updates of the step until the next one; its
+/// warning names what failed (a multiplier update with the penetration left and the tolerance, or
+/// a friction refresh, which has no penetration tolerance).
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <memory>
+#include <sstream>
 #include <string>
 
+#include <spdlog/sinks/ostream_sink.h>
+
+#include "sinew/core/log.hpp"
 #include "sinew/model/contact_refinement.hpp"
 #include "sinew/model/model.hpp"
 #include "sinew/scene/load_scene.hpp"
@@ -19,6 +27,31 @@ VectorX pressures(const contact::ContactEnergy& contact, Index num_nodes) {
   return contact.pressure().size() == 0 ? VectorX::Zero(num_nodes) : contact.pressure();
 }
 
+/// What the project's logger writes while it lives.
+class CapturedLog {
+ public:
+  CapturedLog() : sink_(std::make_shared<spdlog::sinks::ostream_sink_mt>(text_)) { logger().sinks().push_back(sink_); }
+  ~CapturedLog() {
+    auto& sinks = logger().sinks();
+    sinks.erase(std::remove(sinks.begin(), sinks.end(), sink_), sinks.end());
+  }
+  CapturedLog(const CapturedLog&) = delete;
+  CapturedLog& operator=(const CapturedLog&) = delete;
+  std::string text() const { return text_.str(); }
+
+ private:
+  std::ostringstream text_;
+  std::shared_ptr<spdlog::sinks::ostream_sink_mt> sink_;
+};
+
+/// The upper block of stacked-blocks pushed 0.1 mm into the lower one.
+fem::State pressed_blocks(const Model& model) {
+  fem::State state = model.dofs->initial_state(0.0);
+  const fem::BodyRange& upper = model.problem->bodies.at(1);
+  state.x.middleRows(upper.first_node, upper.num_nodes).col(2).array() -= 0.1;
+  return state;
+}
+
 TEST(ContactRefinement, AFailedReSolveIsOfferedHalfAQuarterAndAnEighthOfTheUpdateThenNothing) {
   scene::SceneConfig config = scene::load_scene_file(std::string(SINEW_SOURCE_DIR) + "/examples/stacked-blocks.json");
   config.contact.enforcement.method = contact::ContactEnforcement::AugmentedLagrangian;
@@ -27,10 +60,7 @@ TEST(ContactRefinement, AFailedReSolveIsOfferedHalfAQuarterAndAnEighthOfTheUpdat
   Model model = build_model(config);
   ASSERT_TRUE(model.contact);
   const Index n = model.problem->mesh.num_nodes();
-  // The upper block pushed 0.1 mm into the lower one.
-  fem::State state = model.dofs->initial_state(0.0);
-  const fem::BodyRange& upper = model.problem->bodies.at(1);
-  state.x.middleRows(upper.first_node, upper.num_nodes).col(2).array() -= 0.1;
+  const fem::State state = pressed_blocks(model);
 
   ContactRefinement refinement(*model.contact, model.contact_enforcement);
   ASSERT_TRUE(refinement.refine(state));
@@ -42,13 +72,36 @@ TEST(ContactRefinement, AFailedReSolveIsOfferedHalfAQuarterAndAnEighthOfTheUpdat
         << fraction;
   }
   // Nothing smaller: the pressures before the update (none), and no more updates in this step.
-  EXPECT_FALSE(refinement.retry_softer());
+  {
+    const CapturedLog log;
+    EXPECT_FALSE(refinement.retry_softer());
+    EXPECT_NE(log.text().find("no convergence after the multiplier update of this step"), std::string::npos)
+        << log.text();
+    EXPECT_NE(log.text().find("tolerance 0.001"), std::string::npos) << log.text();
+  }
   EXPECT_EQ(pressures(*model.contact, n).cwiseAbs().maxCoeff(), 0);
   EXPECT_FALSE(refinement.refine(state));
   // The next step updates again.
   refinement.accept(state);
   EXPECT_TRUE(refinement.refine(state));
   EXPECT_LT((pressures(*model.contact, n) - update).cwiseAbs().maxCoeff(), 1e-12 * update.maxCoeff());
+}
+
+TEST(ContactRefinement, AFailedReSolveAfterAFrictionRefreshIsNotRetriedAndSaysSoWithoutATolerance) {
+  scene::SceneConfig config = scene::load_scene_file(std::string(SINEW_SOURCE_DIR) + "/examples/stacked-blocks.json");
+  config.contact.friction.coefficient = 0.5;
+  Model model = build_model(config);
+  ASSERT_TRUE(model.contact);
+  ASSERT_TRUE(model.friction);
+  const fem::State state = pressed_blocks(model);
+  ContactRefinement refinement(*model.contact, model.contact_enforcement, model.friction.get());
+  // The friction was lagged at rest (no normal force): pressed, the normal force changed.
+  ASSERT_TRUE(refinement.refine(state));
+  const CapturedLog log;
+  EXPECT_FALSE(refinement.retry_softer());
+  EXPECT_NE(log.text().find("no convergence after the friction refresh of this step"), std::string::npos)
+      << log.text();
+  EXPECT_EQ(log.text().find("tolerance"), std::string::npos) << "friction has no penetration tolerance: " << log.text();
 }
 
 }  // namespace

@@ -59,9 +59,15 @@ bool ContactRefinement::retry_softer() {
   }
   if (updated_) contact_.set_pressure(previous_pressure_);
   exhausted_ = true;
-  logger().warn("contact: no convergence after the {} update of this step; the step keeps its last converged state "
-                "(largest penetration {:.3g}, tolerance {:.3g})",
-                updated_ ? "multiplier" : "friction", last_max_penetration_, options_.penetration_tolerance);
+  if (updated_) {
+    logger().warn("contact: no convergence after the multiplier update of this step; the step keeps its last converged "
+                  "state (largest penetration {:.3g}, tolerance {:.3g})",
+                  last_max_penetration_, options_.penetration_tolerance);
+  } else {
+    // A friction refresh: its normal forces and slip bases stay those of the last converged state.
+    logger().warn("contact: no convergence after the friction refresh of this step; the step keeps its last converged "
+                  "state, solved with the friction's previous lag");
+  }
   return false;
 }
 
