@@ -149,10 +149,6 @@ def scene(element_size, increments, thigh="hull"):
         {"region": "skin", "shape": skin_fat()},
     ]
     name = "knee-flexion"
-    if thigh == "muscle":
-        leg_parts[-2:] = [{"region": "muscle", "shape": thigh_muscle()},
-                          {"region": "skin", "shape": skin_fat_round_muscle()}]
-        name = "knee-flexion-full-thigh"
     description = ("The seed's knee flexion (dissertation section 7, paper section 6) on a generated right leg "
                    "(scripts/make_knee.py): rigid femur fixed, rigid tibia turned 150 degrees about the "
                    "transverse axis through the condyles in 3-degree increments, rigid patella free, pulled "
@@ -160,6 +156,9 @@ def scene(element_size, increments, thigh="hull"):
                    "Table 2; skin-fat filling the leg around them, bonded to the tibia, folding behind the knee. "
                    "Frictionless material-depth contact between every pair of parts and self-contact of the skin.")
     if thigh == "muscle":
+        leg_parts[-2:] = [{"region": "muscle", "shape": thigh_muscle()},
+                          {"region": "skin", "shape": skin_fat_round_muscle()}]
+        name = "knee-flexion-full-thigh"
         description += (" This variant (--thigh muscle) has no voids in the thigh: Table 2's muscle fills it in "
                         "front of, beside and behind the femur under a 10 mm skin-fat layer bonded to it.")
     return {
@@ -213,7 +212,8 @@ def main():
     parser.add_argument("--increments", type=int, default=50, help="load increments over the 150 degrees")
     parser.add_argument("--thigh", choices=["hull", "muscle"], default="hull",
                         help="hull: the main job's thigh (skin-fat over a hull round the quadriceps group); "
-                             "muscle: a thigh full of muscle, no voids but the sliding gaps and the suprapatellar pouch (knee-flexion-full-thigh.json)")
+                             "muscle: a thigh full of muscle, no voids but the sliding gaps and the suprapatellar "
+                             "pouch (knee-flexion-full-thigh.json)")
     parser.add_argument("--out", help="default: examples/knee-flexion.json, with --thigh muscle "
                                       "examples/knee-flexion-full-thigh.json")
     args = parser.parse_args()

@@ -36,9 +36,10 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 REGION_COLOURS = ["#b0b0b0", "#d9d9d9", "#5a8dd6", "#2f5fb3", "#2f5fb3", "#c25cc2", "#5cb85c", "#e6c229",
                   "#f2c9a0"]
 SKIN_SIDE_COLOUR = "#b0b0b0"  # the side view's translucent skin
+# The regions of both legs, in this order (knee_rest.png's legend).
+REGION_NAMES = ["femur", "tibia", "patella", "ligament", "tendon", "graded_2", "graded_1", "muscle", "skin-fat"]
 # The VH leg's regions: femur, tibia, patella, ligament, tendon, graded_2, graded_1, muscle, skin
 # (scripts/make_vh_knee.py).
-REGION_NAMES = ["femur", "tibia", "patella", "ligament", "tendon", "graded_2", "graded_1", "muscle", "skin-fat"]
 VH_REGION_COLOURS = ["#b0b0b0", "#d9d9d9", "#a0a0a0", "#2f5fb3", "#2f5fb3", "#c25cc2", "#5cb85c", "#d98c6a",
                      "#f2c9a0"]
 
@@ -158,6 +159,11 @@ def draw_section(ax, mesh, field, label, window=None, cmap="turbo_r"):
             pc.set_clim(0, np.percentile(shown[shown > 0], 98) if (shown > 0).any() else 1)
     ax.add_collection(pc)
     plt.colorbar(pc, ax=ax, shrink=0.7, label=label)
+    frame_section(ax, polys, window)
+
+
+def frame_section(ax, polys, window=None):
+    """Limits (`window`, or the polygons with a 5 mm margin), equal aspect and axis labels."""
     allp = np.concatenate(polys)
     if window is None:
         window = (allp[:, 0].min() - 5, allp[:, 0].max() + 5, allp[:, 1].min() - 5, allp[:, 1].max() + 5)
@@ -174,17 +180,11 @@ def draw_regions(ax, mesh):
     region = np.asarray(mesh.cell_data_dict["region"]["tetra"]).reshape(-1).astype(int)[owners]
     colours = [REGION_COLOURS[r % len(REGION_COLOURS)] for r in region]
     ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors="k", linewidths=0.08))
-    names = REGION_NAMES  # the VH leg's regions are the same, in the same order
     for r in sorted(set(region)):
         ax.plot([], [], "s", color=REGION_COLOURS[r % len(REGION_COLOURS)], markersize=8,
-                label=names[r] if r < len(names) else f"region {r}")
+                label=REGION_NAMES[r] if r < len(REGION_NAMES) else f"region {r}")
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=8, frameon=False)
-    allp = np.concatenate(polys)
-    ax.set_xlim(allp[:, 0].min() - 5, allp[:, 0].max() + 5)
-    ax.set_ylim(allp[:, 1].min() - 5, allp[:, 1].max() + 5)
-    ax.set_aspect("equal")
-    ax.set_xlabel(FRAME.labels[0])
-    ax.set_ylabel(FRAME.labels[1])
+    frame_section(ax, polys)
 
 
 def main():

@@ -11,8 +11,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "examples/example_support.hpp"
+#include "sinew/collision/clip_triangle_tet.hpp"
 #include "sinew/model/model.hpp"
 
 namespace sinew::examples_test {
@@ -42,8 +45,8 @@ void expect_coarse_flexion_moves_the_patella_distally(const std::string& name) {
   const double skin_thickness = 10;  // mm, scripts/make_knee.py
   std::printf("[ example  ] %s coarse: %d steps, %d Newton iterations, %d cuts, max penetration %.3f mm "
               "(%.1f %% of the skin's thickness)\n",
-              name.c_str(), run.report.result.steps, run.report.result.newton_iterations, run.report.result.cuts, max_penetration,
-              100 * max_penetration / skin_thickness);
+              name.c_str(), run.report.result.steps, run.report.result.newton_iterations, run.report.result.cuts,
+              max_penetration, 100 * max_penetration / skin_thickness);
   EXPECT_LT(max_penetration, 0.15 * skin_thickness);
 
   // The tibia turns as prescribed; the patella, free, follows the ligament: down and back,
@@ -105,16 +108,12 @@ std::vector<Eigen::Vector3d> thigh_points_outside_the_leg(const std::string& nam
           continue;
         bool inside = false;
         for (Index t = leg.first_tet; t < leg.first_tet + leg.num_tets && !inside; ++t) {
-          Eigen::Vector3d lo = mesh.rest.row(mesh.tets(t, 0)).transpose(), hi = lo;
-          for (int c = 1; c < 4; ++c) {
-            lo = lo.cwiseMin(mesh.rest.row(mesh.tets(t, c)).transpose());
-            hi = hi.cwiseMax(mesh.rest.row(mesh.tets(t, c)).transpose());
-          }
-          if ((point.array() < lo.array() - 1e-9).any() || (point.array() > hi.array() + 1e-9).any()) continue;
-          Eigen::Matrix3d edges;
-          for (int c = 0; c < 3; ++c) edges.col(c) = (mesh.rest.row(mesh.tets(t, c + 1)) - mesh.rest.row(mesh.tets(t, 0))).transpose();
-          const Eigen::Vector3d b = edges.partialPivLu().solve(point - mesh.rest.row(mesh.tets(t, 0)).transpose());
-          inside = b.minCoeff() >= -1e-9 && b.sum() <= 1 + 1e-9;
+          Eigen::Matrix<double, 4, 3> tet;
+          for (int c = 0; c < 4; ++c) tet.row(c) = mesh.rest.row(mesh.tets(t, c));
+          if ((point.transpose().array() < tet.colwise().minCoeff().array() - 1e-9).any() ||
+              (point.transpose().array() > tet.colwise().maxCoeff().array() + 1e-9).any())
+            continue;
+          inside = collision::tet_barycentric(point, tet).minCoeff() >= -1e-9;
         }
         if (!inside) outside.push_back(point);
       }
