@@ -1,7 +1,7 @@
 /// Benchmark (issue 2): a Mooney-Rivlin block of about 10k nodes / 40k tets compressed 30 % in
 /// 10 increments. Prints the total time, Newton iterations and the split between forces and
 /// stiffness, linear solve and line search, factorizations and lagged-CG iterations, for each
-/// predictor, with and without lagged factorizations.
+/// predictor, with and without lagged factorizations, and for PETSc's MUMPS and CG + GAMG.
 /// Timings are measured here, never asserted in tests.
 
 #include <benchmark/benchmark.h>
@@ -57,7 +57,10 @@ void BM_CompressBlock(benchmark::State& state, solver::LoadSteppingOptions::Pred
   scene.solver.stepping.predictor = predictor;
   scene.solver.linear.kind = linear;
   scene.solver.linear.lagged_iterations = lagged_iterations;
-  if (linear != solver::LinearSolverOptions::Kind::Cholmod) {
+  if (linear == solver::LinearSolverOptions::Kind::PetscGamg) {
+    scene.solver.linear.tolerance = 1e-6;  // Newton converges quadratically, as with a direct solve
+    scene.solver.linear.max_iterations = 500;
+  } else if (linear != solver::LinearSolverOptions::Kind::Cholmod && linear != solver::LinearSolverOptions::Kind::PetscMumps) {
     scene.solver.linear.max_iterations = 500;
     scene.solver.newton.max_iterations = 200;
   }
@@ -95,6 +98,10 @@ BENCHMARK_CAPTURE(BM_CompressBlock, tangent_cholmod, P::Tangent, L::Cholmod, 0)-
 BENCHMARK_CAPTURE(BM_CompressBlock, tangent_cholmod_lagged10, P::Tangent, L::Cholmod, 10)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(BM_CompressBlock, tangent_cholmod_lagged20, P::Tangent, L::Cholmod, 20)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(BM_CompressBlock, tangent_cholmod_lagged40, P::Tangent, L::Cholmod, 40)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+// PETSc's solvers on one process (issue 19), between CHOLMOD runs.
+BENCHMARK_CAPTURE(BM_CompressBlock, tangent_petsc_mumps, P::Tangent, L::PetscMumps, 0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_CompressBlock, tangent_cholmod_again, P::Tangent, L::Cholmod, 0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(BM_CompressBlock, tangent_petsc_gamg, P::Tangent, L::PetscGamg, 0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(BM_CompressBlock, two_point_cholmod, P::TwoPoint, L::Cholmod, 0)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(BM_CompressBlock, two_point_cholmod_lagged20, P::TwoPoint, L::Cholmod, 20)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 

@@ -11,6 +11,7 @@ PACKAGES=(
   libopenblas0-pthread   # an optimized BLAS: CHOLMOD's supernodal factorization is ~10x slower on reference BLAS
   libgmsh-dev gmsh       # Gmsh C++ API: OpenCASCADE geometry, meshing, .msh reading
   libtbb-dev             # parallel assembly
+  libpetsc-real-dev libopenmpi-dev  # PETSc (MUMPS, hypre, PT-Scotch) over OpenMPI: the petsc-gamg and petsc-mumps solvers
   libassimp-dev          # surface meshes in: STL, OBJ, PLY, glTF/GLB
   libcgal-dev            # surfaces to meshes: repair, inside/distance queries, Mesh_3 tetrahedralization
   nlohmann-json3-dev     # scene files

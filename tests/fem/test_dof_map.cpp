@@ -21,24 +21,10 @@ namespace {
 /// held in its plane, the edge x = 0, y = 0 also in y = 0, and node 0 is prescribed.
 fem::Problem mixed_problem(fem::RigidBody::Kind rigid_kind) {
   auto p = st::box_problem(4, 2, 2, Vector3(0, 0, 0), Vector3(2, 1, 1), st::mooney_rivlin(), 1.0);
-  p.mesh.region_names = {"soft", "bone"};
-  p.region_material.push_back(nullptr);
-  p.region_density.push_back(3.0);
-  fem::RigidBody body;
-  body.name = "bone";
-  body.kind = rigid_kind;
+  fem::RigidBody& body = st::add_rigid_region(p, "bone", rigid_kind, 3.0, [](const Vector3& c) { return c.x() > 1.5; });
   body.motion.translation = Vector3(0.1, 0.2, 0);
   body.motion.angle = 0.3;
   body.motion.axis = Vector3(0, 1, 1);
-  for (Index t = 0; t < p.mesh.num_tets(); ++t) {
-    double cx = 0;
-    for (int i = 0; i < 4; ++i) cx += p.mesh.rest(p.mesh.tets(t, i), 0) / 4;
-    if (cx > 1.5) {
-      p.mesh.region[t] = 1;
-      body.tets.push_back(t);
-    }
-  }
-  p.rigid_bodies.push_back(body);
   p.planar.push_back({"x0", st::nodes_on_plane(p.mesh, 0, 0.0), Vector3(2, 0, 0), 0.05, {}});
   std::vector<Index> edge;
   for (Index a : st::nodes_on_plane(p.mesh, 0, 0.0))

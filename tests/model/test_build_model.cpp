@@ -149,17 +149,7 @@ TEST(BuildModel, AnExplicitRunWithAFreeMasslessPartIsAnInputError) {
 TEST(SolveModel, AStaticModelIsPressedOntoThePlate) {
   // The box's top is pushed down by 0.02 on rollers (x = 0 and y = 0 faces held in their
   // planes): contact holds the bottom up, so the box is compressed.
-  json scene = contact_scene();
-  scene.erase("loads");
-  auto plane = [](const char* name, std::vector<double> point, std::vector<double> normal, double displacement) {
-    return json{{"name", name},
-                {"type", "planar"},
-                {"nodes", {{"body", "box"}, {"plane", {{"point", point}, {"normal", normal}, {"tolerance", 1e-6}}}}},
-                {"normal", normal},
-                {"displacement", displacement}};
-  };
-  scene["boundary_conditions"] = {plane("top", {0, 0, 0.5}, {0, 0, 1}, -0.02), plane("x0", {0, 0, 0}, {1, 0, 0}, 0),
-                                  plane("y0", {0, 0, 0}, {0, 1, 0}, 0)};
+  json scene = sinew::testing::pressed_box_on_plate_scene();
   scene["solver"]["increments"] = 2;
   Model model = build(scene);
   const solver::StepperResult result = solve_model(model);

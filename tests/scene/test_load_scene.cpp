@@ -515,7 +515,8 @@ TEST(LoadSceneErrors, EnumSuggestion) {
   EXPECT_EQ(parse_error(scene),
             "solver.predictor: must be one of \"none\", \"two-point\", \"tangent\", got \"two_point\"; did you mean "
             "\"two-point\"?\n"
-            "solver.linear.solver: must be one of \"cholmod\", \"gmres\", \"cg\", got \"CG\"; did you mean \"cg\"?");
+            "solver.linear.solver: must be one of \"cholmod\", \"gmres\", \"cg\", \"petsc-gamg\", \"petsc-mumps\", got "
+            "\"CG\"; did you mean \"cg\"?");
 }
 
 TEST(LoadSceneErrors, BodyNamesCannotHoldASlash) {

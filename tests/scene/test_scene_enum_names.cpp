@@ -60,7 +60,7 @@ TEST(SceneEnumNames, TablesCoverEveryValue) {
   // Each table lists every enumerator once: the last enumerator's underlying value + 1 entries.
   EXPECT_EQ(contact::kContactMethodNames.size(), 2u);
   EXPECT_EQ(contact::kPairHessianNames.size(), 3u);
-  EXPECT_EQ(solver::kLinearSolverNames.size(), 3u);
+  EXPECT_EQ(solver::kLinearSolverNames.size(), 5u);
   EXPECT_EQ(solver::kLineSearchNames.size(), 2u);
   EXPECT_EQ(solver::kPredictorNames.size(), 3u);
   EXPECT_EQ(solver::kIntegratorNames.size(), 3u);

@@ -60,7 +60,8 @@ TEST_P(LinearSolvers, SolveWorksAfterTheFactorizedMatrixIsDestroyed) {
 
 INSTANTIATE_TEST_SUITE_P(AllKinds, LinearSolvers,
                          ::testing::Values(LinearSolverOptions::Kind::Cholmod, LinearSolverOptions::Kind::Gmres,
-                                           LinearSolverOptions::Kind::ConjugateGradient));
+                                           LinearSolverOptions::Kind::ConjugateGradient,
+                                           LinearSolverOptions::Kind::PetscGamg, LinearSolverOptions::Kind::PetscMumps));
 
 // CHOLMOD's allocations go through SuiteSparse_config; one that fails during the numeric
 // factorization must be reported as memory, not as an indefinite matrix (which Newton would

@@ -179,21 +179,7 @@ TEST(StaticSolver, ImpossibleMotionFailsClearlyAndKeepsTheLastConvergedState) {
 TEST(StaticSolver, FreeRigidBodyHangingFromASoftBlockCarriesItsWeight) {
   // A soft column clamped at the top with a heavy free rigid block bonded below it.
   auto p = st::box_problem(2, 2, 6, Vector3(0, 0, 0), Vector3(1, 1, 3), st::mooney_rivlin(5, 1, 20), 1.0);
-  p.mesh.region_names = {"soft", "weight"};
-  p.region_material.push_back(nullptr);
-  p.region_density.push_back(20.0);
-  fem::RigidBody weight;
-  weight.name = "weight";
-  weight.kind = fem::RigidBody::Kind::Free;
-  for (Index t = 0; t < p.mesh.num_tets(); ++t) {
-    double cz = 0;
-    for (int i = 0; i < 4; ++i) cz += p.mesh.rest(p.mesh.tets(t, i), 2) / 4;
-    if (cz < 1.0) {
-      p.mesh.region[t] = 1;
-      weight.tets.push_back(t);
-    }
-  }
-  p.rigid_bodies.push_back(weight);
+  st::add_rigid_region(p, "weight", fem::RigidBody::Kind::Free, 20.0, [](const Vector3& c) { return c.z() < 1.0; });
   p.gravity = Vector3(0, 0, -1);
   p.prescribed.push_back({"ceiling", st::nodes_on_plane(p.mesh, 2, 3.0), fem::RigidMotion{}});
   SolverRig run(std::move(p));

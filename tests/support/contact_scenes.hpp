@@ -2,6 +2,8 @@
 /// @file contact_scenes.hpp
 /// Small contact scenes as JSON, shared by the scene and model tests.
 
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 namespace sinew::testing {
@@ -24,6 +26,22 @@ inline nlohmann::json box_on_plate_scene() {
     ],
     "contact": {}
   })");
+}
+
+/// box_on_plate_scene with the box's top pushed down by `push` on rollers (its x = 0 and y = 0
+/// faces held in their planes): contact with the plate holds its bottom up.
+inline nlohmann::json pressed_box_on_plate_scene(double push = 0.02) {
+  nlohmann::json scene = box_on_plate_scene();
+  auto plane = [](const char* name, std::vector<double> point, std::vector<double> normal, double displacement) {
+    return nlohmann::json{{"name", name},
+                          {"type", "planar"},
+                          {"nodes", {{"body", "box"}, {"plane", {{"point", point}, {"normal", normal}, {"tolerance", 1e-6}}}}},
+                          {"normal", normal},
+                          {"displacement", displacement}};
+  };
+  scene["boundary_conditions"] = {plane("top", {0, 0, 0.5}, {0, 0, 1}, -push), plane("x0", {0, 0, 0}, {1, 0, 0}, 0),
+                                  plane("y0", {0, 0, 0}, {0, 1, 0}, 0)};
+  return scene;
 }
 
 }  // namespace sinew::testing

@@ -32,4 +32,28 @@ inline std::vector<material::MaterialPtr> tet_materials(const fem::Problem& p) {
   return out;
 }
 
+/// Makes the tets of `p` whose centroid satisfies `inside(centroid)` a second region, rigid body
+/// `name` of `kind` (region material null, density `density`), and returns the body (added to
+/// p.rigid_bodies) for the caller to give a motion.
+template <class Inside>
+fem::RigidBody& add_rigid_region(fem::Problem& p, const std::string& name, fem::RigidBody::Kind kind,
+                                 double density, Inside inside) {
+  p.mesh.region_names = {"soft", name};
+  p.region_material.push_back(nullptr);
+  p.region_density.push_back(density);
+  fem::RigidBody body;
+  body.name = name;
+  body.kind = kind;
+  for (Index t = 0; t < p.mesh.num_tets(); ++t) {
+    Vector3 centroid = Vector3::Zero();
+    for (int i = 0; i < 4; ++i) centroid += p.mesh.rest.row(p.mesh.tets(t, i)).transpose() / 4;
+    if (inside(centroid)) {
+      p.mesh.region[t] = 1;
+      body.tets.push_back(t);
+    }
+  }
+  p.rigid_bodies.push_back(body);
+  return p.rigid_bodies.back();
+}
+
 }  // namespace sinew::testing

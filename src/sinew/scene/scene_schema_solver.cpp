@@ -86,7 +86,11 @@ SchemaNode solver_schema() {
                      .fallback(json::object()),
                  object("linear", "linear solver of each Newton iteration",
                         {
-                            choice("solver", "sparse Cholesky (CHOLMOD), GMRES or conjugate gradients", linear.kind),
+                            choice("solver",
+                                   "sparse Cholesky (CHOLMOD), GMRES, conjugate gradients, PETSc's conjugate gradients "
+                                   "with algebraic multigrid given the rigid-body modes (petsc-gamg; set tolerance to "
+                                   "1e-6 or below for Newton's quadratic convergence) or PETSc's MUMPS LDL^T",
+                                   linear.kind),
                             number("tolerance", "relative residual at which iterative solvers stop")
                                 .min(kMinTolerance)
                                 .below(1)

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "sinew/core/error.hpp"
+#include "sinew/solver/petsc_linear_solver.hpp"
 
 namespace sinew::solver {
 namespace {
@@ -195,6 +196,9 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& opti
       return std::make_unique<IterativeSolver<
           Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>>>>(
           options, name_of(Kind::ConjugateGradient).data());
+    case Kind::PetscGamg:
+    case Kind::PetscMumps:
+      return make_petsc_linear_solver(options);
   }
   return nullptr;
 }

@@ -37,6 +37,15 @@ class LinearSolver {
   /// The next solves must reach |K x - b| <= eta |b| if they are inexact (lagged CHOLMOD: the
   /// smaller of eta and its lagged_tolerance; eta = 0: factorize, no lagged CG). Others ignore it.
   virtual void require_relative_residual(double /*eta*/) {}
+  /// True when the solver's preconditioner uses the rigid-body modes (PETSc's GAMG): the caller
+  /// then passes them with set_rigid_body_modes before each factorize().
+  virtual bool wants_rigid_body_modes() const { return false; }
+  /// `modes`: #dofs x (up to 6) orthonormal columns (fem::rigid_body_modes); `block_size`: 3 when
+  /// the unknowns come in aligned triples, else 1 (fem::unknowns_block_size).
+  virtual void set_rigid_body_modes(const MatrixX& /*modes*/, int /*block_size*/) {}
+  /// Negative eigenvalues of the last matrix factorized when the solver knows its inertia (MUMPS's
+  /// LDL^T), else -1.
+  virtual long negative_eigenvalues() const { return -1; }
 };
 
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options);

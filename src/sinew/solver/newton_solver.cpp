@@ -1,5 +1,7 @@
 #include "sinew/solver/newton_solver.hpp"
 
+#include "sinew/fem/rigid_body_modes.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -56,9 +58,16 @@ bool NewtonSolver::ensure_factorization(const fem::State& state, const NodalVect
     fresh = objective_.hessian(state, full_gradient, setup_.node_viscosity, K_);
   }
   Stopwatch watch(times_.linear_solve);
+  pass_rigid_body_modes(state);
   if (fresh) linear_->analyze(K_);
   factorized_ = linear_->factorize(K_);
   return factorized_;
+}
+
+void NewtonSolver::pass_rigid_body_modes(const fem::State& state) {
+  if (!linear_->wants_rigid_body_modes()) return;
+  const fem::DofMap& dofs = objective_.dofs();
+  linear_->set_rigid_body_modes(fem::rigid_body_modes(dofs, state), fem::unknowns_block_size(dofs, state.x.rows()));
 }
 
 LinearCounts NewtonSolver::counts() const {
@@ -174,6 +183,7 @@ NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options
       // Newton, near round-off for one; docs/solver.md, "Lagged factorizations").
       const bool stalling = it > 0 && residual > 0.5 * previous_residual;
       linear_->require_relative_residual(stalling ? 0.0 : 1.0);
+      pass_rigid_body_modes(state);
       direction = newton_direction(K_, fresh, g, *linear_,
                                    ShiftStart{.first = shift_hint, .after_unshifted_failure = last_shift_ / 10});
     }

@@ -7,7 +7,7 @@
 namespace sinew::solver {
 
 struct LinearSolverOptions {
-  enum class Kind { Cholmod, Gmres, ConjugateGradient };
+  enum class Kind { Cholmod, Gmres, ConjugateGradient, PetscGamg, PetscMumps };
   Kind kind = Kind::Cholmod;
   /// Relative residual at which iterative solvers stop (the seed's GMRES: 0.1).
   double tolerance = 0.1;
@@ -71,10 +71,12 @@ struct LoadSteppingOptions {
 };
 
 /// Scene names of LinearSolverOptions::Kind.
-inline constexpr NameTable<LinearSolverOptions::Kind, 3> kLinearSolverNames{{
+inline constexpr NameTable<LinearSolverOptions::Kind, 5> kLinearSolverNames{{
     {LinearSolverOptions::Kind::Cholmod, "cholmod"},
     {LinearSolverOptions::Kind::Gmres, "gmres"},
     {LinearSolverOptions::Kind::ConjugateGradient, "cg"},
+    {LinearSolverOptions::Kind::PetscGamg, "petsc-gamg"},
+    {LinearSolverOptions::Kind::PetscMumps, "petsc-mumps"},
 }};
 constexpr const auto& enum_names(LinearSolverOptions::Kind) { return kLinearSolverNames; }
 

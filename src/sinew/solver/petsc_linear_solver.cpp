@@ -1,0 +1,238 @@
+#include "sinew/solver/petsc_linear_solver.hpp"
+
+#include <petscksp.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <mutex>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "sinew/core/error.hpp"
+
+namespace sinew::solver {
+namespace {
+
+/// Throws sinew::Error naming the PETSc call that failed (PETSc's own report is silenced by the
+/// return-only error handler set in ensure_petsc).
+void check(PetscErrorCode code, const char* call) {
+  if (code == 0) return;
+  const char* text = nullptr;
+  PetscErrorMessage(code, &text, nullptr);
+  if (code == PETSC_ERR_MEM) throw OutOfMemoryError(fmt::format("PETSc ran out of memory in {}", call));
+  throw Error(fmt::format("PETSc failed in {}: {} (error {})", call, text ? text : "unknown error", static_cast<int>(code)));
+}
+
+/// Initializes PETSc (and MPI, as a singleton when not started by mpirun) once per process and
+/// finalizes it at exit.
+void ensure_petsc() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    PetscBool initialized = PETSC_FALSE;
+    PetscInitialized(&initialized);
+    if (initialized) return;
+    check(PetscInitializeNoArguments(), "PetscInitializeNoArguments");
+    check(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), "PetscPushErrorHandler");
+    std::atexit([] { PetscFinalize(); });
+  });
+}
+
+/// Owns one PETSc object and destroys it with the matching XxxDestroy.
+template <class T, PetscErrorCode (*Destroy)(T*)>
+class Handle {
+ public:
+  Handle() = default;
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  ~Handle() { reset(); }
+  void reset() {
+    if (object_) Destroy(&object_);
+    object_ = nullptr;
+  }
+  T& operator*() { return object_; }
+  T get() const { return object_; }
+
+ private:
+  T object_ = nullptr;
+};
+
+using MatHandle = Handle<Mat, MatDestroy>;
+using KspHandle = Handle<KSP, KSPDestroy>;
+using VecHandle = Handle<Vec, VecDestroy>;
+using NullSpaceHandle = Handle<MatNullSpace, MatNullSpaceDestroy>;
+
+/// A sequential PETSc vector viewing an Eigen vector's storage (no copy; PETSc writes into it
+/// when it is a solution).
+void wrap(const VectorX& v, VecHandle& out) {
+  out.reset();
+  check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, static_cast<PetscInt>(v.size()), v.data(), &*out),
+        "VecCreateSeqWithArray");
+}
+
+class PetscSolver final : public LinearSolver {
+ public:
+  explicit PetscSolver(const LinearSolverOptions& options)
+      : gamg_(options.kind == LinearSolverOptions::Kind::PetscGamg),
+        tolerance_(options.tolerance),
+        max_iterations_(options.max_iterations) {
+    ensure_petsc();
+  }
+
+  void analyze(const SparseMatrix& K) override {
+    // K is symmetric and stored in full, so its compressed columns are also its compressed rows.
+    ksp_.reset();
+    A_.reset();
+    const auto n = static_cast<PetscInt>(K.rows());
+    std::vector<PetscInt> starts(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
+    std::vector<PetscInt> columns(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
+    check(MatCreate(PETSC_COMM_SELF, &*A_), "MatCreate");
+    check(MatSetSizes(A_.get(), n, n, n, n), "MatSetSizes");
+    check(MatSetType(A_.get(), MATSEQAIJ), "MatSetType");
+    if (block_size_ > 1 && n % block_size_ == 0) check(MatSetBlockSize(A_.get(), block_size_), "MatSetBlockSize");
+    check(MatSeqAIJSetPreallocationCSR(A_.get(), starts.data(), columns.data(), nullptr), "MatSeqAIJSetPreallocationCSR");
+    check(MatSetOption(A_.get(), MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption(MAT_SYMMETRIC)");
+    check(MatSetOption(A_.get(), MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "MatSetOption(MAT_SYMMETRY_ETERNAL)");
+    check(MatSetOption(A_.get(), MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE), "MatSetOption");
+    starts_ = std::move(starts);
+    columns_ = std::move(columns);
+    check(KSPCreate(PETSC_COMM_SELF, &*ksp_), "KSPCreate");
+    PC pc = nullptr;
+    check(KSPGetPC(ksp_.get(), &pc), "KSPGetPC");
+    if (gamg_) {
+      check(KSPSetType(ksp_.get(), KSPCG), "KSPSetType(cg)");
+      check(PCSetType(pc, PCGAMG), "PCSetType(gamg)");
+      check(KSPSetTolerances(ksp_.get(), tolerance_, 0.0, PETSC_DEFAULT, max_iterations_), "KSPSetTolerances");
+    } else {
+      check(KSPSetType(ksp_.get(), KSPPREONLY), "KSPSetType(preonly)");
+      check(PCSetType(pc, PCCHOLESKY), "PCSetType(cholesky)");
+      check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType(mumps)");
+    }
+    check(KSPSetOperators(ksp_.get(), A_.get(), A_.get()), "KSPSetOperators");
+    if (!gamg_) {
+      check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+      Mat F = nullptr;
+      check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+      check(MatMumpsSetIcntl(F, 24, 1), "MatMumpsSetIcntl(24)");  // detect null pivots (the inertia's zeros)
+      check(MatMumpsSetIcntl(F, 14, 50), "MatMumpsSetIcntl(14)");  // 50 % workspace headroom
+    }
+    check(KSPSetFromOptions(ksp_.get()), "KSPSetFromOptions");  // PETSC_OPTIONS may tune either
+  }
+
+  bool factorize(const SparseMatrix& K) override {
+    if (!A_.get() || !same_pattern(K)) analyze(K);
+    PetscScalar* values = nullptr;
+    check(MatSeqAIJGetArray(A_.get(), &values), "MatSeqAIJGetArray");
+    std::copy(K.valuePtr(), K.valuePtr() + K.nonZeros(), values);
+    check(MatSeqAIJRestoreArray(A_.get(), &values), "MatSeqAIJRestoreArray");
+    check(MatAssemblyBegin(A_.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    check(MatAssemblyEnd(A_.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    if (gamg_ && modes_.cols() > 0 && modes_.rows() == K.rows()) {
+      std::vector<VecHandle> vectors(static_cast<std::size_t>(modes_.cols()));
+      std::vector<Vec> raw;
+      for (Index c = 0; c < modes_.cols(); ++c) {
+        auto& v = vectors[static_cast<std::size_t>(c)];
+        check(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(K.rows()), &*v), "VecCreateSeq");
+        PetscScalar* data = nullptr;
+        check(VecGetArray(v.get(), &data), "VecGetArray");
+        std::copy(modes_.col(c).data(), modes_.col(c).data() + K.rows(), data);
+        check(VecRestoreArray(v.get(), &data), "VecRestoreArray");
+        raw.push_back(v.get());
+      }
+      NullSpaceHandle space;
+      check(MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, static_cast<PetscInt>(raw.size()), raw.data(), &*space),
+            "MatNullSpaceCreate");
+      check(MatSetNearNullSpace(A_.get(), space.get()), "MatSetNearNullSpace");
+    }
+    ++factorizations_;
+    negative_ = -1;
+    check(KSPSetOperators(ksp_.get(), A_.get(), A_.get()), "KSPSetOperators");
+    check(KSPSetUp(ksp_.get()), "KSPSetUp");
+    PC pc = nullptr;
+    check(KSPGetPC(ksp_.get(), &pc), "KSPGetPC");
+    PCFailedReason reason = PC_NOERROR;
+    check(PCGetFailedReason(pc, &reason), "PCGetFailedReason");
+    if (reason == PC_FACTOR_OUTMEMORY)
+      throw OutOfMemoryError(fmt::format("MUMPS ran out of memory factorizing a {} x {} matrix", K.rows(), K.rows()));
+    if (reason != PC_NOERROR) return false;
+    if (gamg_) return true;
+    Mat F = nullptr;
+    check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    PetscInt negative = 0, zero = 0, positive = 0;
+    check(MatGetInertia(F, &negative, &zero, &positive), "MatGetInertia");
+    negative_ = negative;
+    return negative == 0 && zero == 0;  // positive definite: the caller shifts otherwise, as for CHOLMOD
+  }
+
+  LinearSolveStats solve(const VectorX& b, VectorX& x) override {
+    LinearSolveStats stats;
+    x = VectorX::Zero(b.size());
+    VecHandle pb, px;
+    wrap(b, pb);
+    wrap(x, px);
+    check(KSPSolve(ksp_.get(), pb.get(), px.get()), "KSPSolve");
+    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+    check(KSPGetConvergedReason(ksp_.get(), &reason), "KSPGetConvergedReason");
+    PetscInt iterations = 0;
+    check(KSPGetIterationNumber(ksp_.get(), &iterations), "KSPGetIterationNumber");
+    stats.iterations = gamg_ ? static_cast<int>(iterations) : 0;
+    A_matrix_times(x, b, stats);
+    // CG meeting negative curvature (an indefinite tangent) or stopping short: the caller shifts.
+    stats.success = reason > 0 && x.allFinite();
+    return stats;
+  }
+
+  const char* name() const override {
+    return name_of(gamg_ ? LinearSolverOptions::Kind::PetscGamg : LinearSolverOptions::Kind::PetscMumps).data();
+  }
+  int factorizations() const override { return factorizations_; }
+  bool wants_rigid_body_modes() const override { return gamg_; }
+  void set_rigid_body_modes(const MatrixX& modes, int block_size) override {
+    modes_ = modes;
+    if (block_size != block_size_) {
+      block_size_ = block_size;
+      A_.reset();  // the block size is set before preallocation: rebuild on the next factorize
+      ksp_.reset();
+    }
+  }
+  long negative_eigenvalues() const override { return negative_; }
+
+ private:
+  bool same_pattern(const SparseMatrix& K) const {
+    return starts_.size() == static_cast<std::size_t>(K.outerSize() + 1) &&
+           columns_.size() == static_cast<std::size_t>(K.nonZeros()) &&
+           std::equal(starts_.begin(), starts_.end(), K.outerIndexPtr()) &&
+           std::equal(columns_.begin(), columns_.end(), K.innerIndexPtr());
+  }
+
+  /// |A x - b| / |b| with PETSc's matrix (the one factorized), into stats.
+  void A_matrix_times(const VectorX& x, const VectorX& b, LinearSolveStats& stats) const {
+    VectorX Ax(b.size());
+    VecHandle px, pAx;
+    wrap(x, px);
+    wrap(Ax, pAx);
+    check(MatMult(A_.get(), px.get(), pAx.get()), "MatMult");
+    const double nb = b.norm();
+    stats.relative_residual = nb > 0 ? (Ax - b).norm() / nb : Ax.norm();
+  }
+
+  bool gamg_;
+  double tolerance_;
+  int max_iterations_;
+  int block_size_ = 1;
+  MatrixX modes_;
+  MatHandle A_;
+  KspHandle ksp_;
+  std::vector<PetscInt> starts_;   ///< the analyzed pattern's column starts
+  std::vector<PetscInt> columns_;  ///< and row indices (compressed columns of the symmetric K)
+  int factorizations_ = 0;
+  long negative_ = -1;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> make_petsc_linear_solver(const LinearSolverOptions& options) {
+  return std::make_unique<PetscSolver>(options);
+}
+
+}  // namespace sinew::solver
