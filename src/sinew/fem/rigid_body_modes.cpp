@@ -4,7 +4,6 @@
 
 #include <Eigen/QR>
 
-
 namespace sinew::fem {
 
 MatrixX rigid_body_modes(const DofMap& dofs, const State& state) {
@@ -46,8 +45,7 @@ MatrixX rigid_body_modes(const DofMap& dofs, const State& state) {
   Eigen::ColPivHouseholderQR<MatrixX> qr(modes);
   qr.setThreshold(1e-10);
   const Index rank = qr.rank();
-  MatrixX basis = qr.householderQ() * MatrixX::Identity(n, rank);
-  return basis;
+  return qr.householderQ() * MatrixX::Identity(n, rank);
 }
 
 int unknowns_block_size(const DofMap& dofs, Index num_nodes) {

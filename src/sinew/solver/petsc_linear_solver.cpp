@@ -189,7 +189,7 @@ class PetscSolver final : public LinearSolver {
     PetscInt iterations = 0;
     check(KSPGetIterationNumber(ksp_.get(), &iterations), "KSPGetIterationNumber");
     stats.iterations = gamg_ ? static_cast<int>(iterations) : 0;
-    A_matrix_times(x, b, stats);
+    stats.relative_residual = relative_residual(x, b);
     // CG meeting negative curvature (an indefinite tangent) or stopping short: the caller shifts.
     stats.success = reason > 0 && x.allFinite();
     return stats;
@@ -218,15 +218,15 @@ class PetscSolver final : public LinearSolver {
            std::equal(columns_.begin(), columns_.end(), K.innerIndexPtr());
   }
 
-  /// |A x - b| / |b| with PETSc's matrix (the one factorized), into stats.
-  void A_matrix_times(const VectorX& x, const VectorX& b, LinearSolveStats& stats) const {
+  /// |A x - b| / |b| with PETSc's matrix (the one factorized; the caller's K may be gone).
+  double relative_residual(const VectorX& x, const VectorX& b) const {
     VectorX Ax(b.size());
     VecHandle px, pAx;
     wrap(x, px);
     wrap(Ax, pAx);
     check(MatMult(A_.get(), px.get(), pAx.get()), "MatMult");
     const double nb = b.norm();
-    stats.relative_residual = nb > 0 ? (Ax - b).norm() / nb : Ax.norm();
+    return nb > 0 ? (Ax - b).norm() / nb : Ax.norm();
   }
 
   bool gamg_;
