@@ -21,9 +21,8 @@ namespace st = sinew::testing;
 
 st::TwoBoxes overlapping_boxes() { return st::two_boxes(2, Vector3(0.55, 0.3, -0.2), 0.4, 7.0, false); }
 
-TEST(ContactEnforcement, FirstUpdateIsThePenaltyPressureAveragedOverEachNodesContactArea) {
-  // From zero pressures, p_i = Σ ε ∫ N_i g / Σ ∫ N_i: between 0 and ε times the largest depth,
-  // positive where the node's triangles penetrate, zero elsewhere.
+TEST(ContactEnforcement, FirstUpdateIsThePenaltyTimesTheDeepestPenetrationOnEachNodesTriangles) {
+  // From zero pressures, p_i = ε max g over the supports of the pairs of node i's triangles.
   const auto boxes = overlapping_boxes();
   ContactEnergy energy(boxes.geometry, {ContactMethod::Area, PairHessian::Exact});
   energy.update(boxes.x);
@@ -31,9 +30,19 @@ TEST(ContactEnforcement, FirstUpdateIsThePenaltyPressureAveragedOverEachNodesCon
   ASSERT_GT(r.pairs, 0);
   const VectorX p = updated_contact_pressure(energy.collisions());
   ASSERT_EQ(p.size(), boxes.x.rows());
-  EXPECT_GE(p.minCoeff(), 0.0);
+  VectorX expected = VectorX::Zero(boxes.x.rows());
+  const CollisionSet& set = energy.collisions();
+  for (const ActivePair& pair : set.pairs()) {
+    const PolygonMoments m = set.integrator().moments(set.pair_geometry_at(boxes.x, pair), pair.support);
+    if (!(m.area > 0)) continue;
+    for (int k = 0; k < 3; ++k) {
+      double& e = expected[boxes.geometry.surface(pair.triangle, k)];
+      e = std::max(e, 7.0 * m.max_depth);
+    }
+  }
+  EXPECT_LT((p - expected).cwiseAbs().maxCoeff(), 1e-14 * expected.maxCoeff());
   EXPECT_GT(p.maxCoeff(), 0.0);
-  EXPECT_LE(p.maxCoeff(), 7.0 * r.max_penetration * (1 + 1e-12));
+  EXPECT_NEAR(p.maxCoeff(), 7.0 * r.max_penetration, 1e-12 * p.maxCoeff());
   // Nodes on no penetrating triangle keep zero pressure.
   std::vector<char> in_contact(static_cast<std::size_t>(boxes.x.rows()), 0);
   for (const ActivePair& pair : energy.collisions().pairs())
@@ -67,6 +76,8 @@ TEST(ContactEnforcement, EnergyWithPressuresHasExactGradientAndHessianOverManyPa
     VectorX p = updated_contact_pressure(energy.collisions());
     for (Index i = 0; i < p.size(); ++i) p[i] *= 1.0 + 0.3 * std::sin(static_cast<double>(i));  // not uniform
     energy.set_pressure(p);
+    // The onset ramp at half the deepest penetration: pieces of the support on both sides of it.
+    energy.set_pressure_onset(0.5 * contact_report(energy, boxes.x).max_penetration);
     auto value = [&](const Eigen::VectorXd& v) {
       const Positions x = st::unflatten(v);
       energy.update(x);
@@ -151,6 +162,8 @@ TEST(ContactEnforcement, BadPenaltiesAndPressuresAreRefusedAndChangeNothing) {
   expect_refused([&] { energy.set_pressure(bad); }, "node 4");
   bad[4] = std::numeric_limits<double>::infinity();
   expect_refused([&] { energy.set_pressure(bad); }, "node 4");
+  expect_refused([&] { energy.set_pressure_onset(-1e-3); }, "pressure onset: -0.001");
+  expect_refused([&] { energy.set_pressure_onset(std::numeric_limits<double>::quiet_NaN()); }, "pressure onset: nan");
 }
 
 TEST(ContactEnforcement, MeanSurfaceEdgeOfAUnitCubeMesh) {

@@ -1,6 +1,6 @@
 // Tests of the augmented Lagrangian term of the pair integral (pair_integral.hpp): with
-// multipliers q at the triangle's vertices the integral is ∫ (g² + 2 q g) da, q linear over the
-// triangle. Its value against the polygon moments, its exact gradient and Hessian against finite
+// multipliers q at the triangle's vertices the integral is ∫ (g² + 2 q r(g)) da, q linear over the
+// triangle, r(g) = g without an onset ramp and the C¹ ramp of width δ with one. Its value against the polygon moments, its exact gradient and Hessian against finite
 // differences that recompute the clip, and the per-vertex moments the multiplier update uses.
 
 #include <gtest/gtest.h>
@@ -21,6 +21,13 @@ PolygonMoments moments(const PairGeometry& pg, bool area) {
 Vector3 random_multiplier(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(0.0, 2.0);
   return {u(rng), u(rng), u(rng)};
+}
+
+/// The pair `pg` (its depths, multipliers and onset) with the 21 coordinates v.
+PairGeometry at(const Eigen::VectorXd& v, const PairGeometry& pg) {
+  PairGeometry q = from_vector(v, pg.depth, pg.multiplier);
+  q.multiplier_onset = pg.multiplier_onset;
+  return q;
 }
 
 class MultiplierTerm : public ::testing::TestWithParam<bool> {};  // true: area, false: point
@@ -68,10 +75,14 @@ TEST_P(MultiplierTerm, GradientMatchesFiniteDifferences) {
     if (!area && min_abs_barycentric(pg) < 1e-4) continue;  // the point method jumps there
     pg.multiplier = random_multiplier(rng);
     if (pair_value(pg, area) <= 1e-8) continue;
-    const PairVector g = pair_gradient(pg, area);
-    auto f = [&](const Eigen::VectorXd& v) { return pair_value(from_vector(v, pg.depth, pg.multiplier), area); };
-    const Eigen::VectorXd fd = st::fd_gradient(f, to_vector(pg), 1e-6);
-    EXPECT_LT(st::relative_error(g, fd), 1e-6) << method_name(area) << " trial " << trial;
+    // Without the onset ramp, and with it at half the deepest point (the fan is split).
+    for (const double onset : {0.0, 0.5 * moments(pg, area).max_depth}) {
+      pg.multiplier_onset = onset;
+      const PairVector g = pair_gradient(pg, area);
+      auto f = [&](const Eigen::VectorXd& v) { return pair_value(at(v, pg), area); };
+      const Eigen::VectorXd fd = st::fd_gradient(f, to_vector(pg), 1e-6);
+      EXPECT_LT(st::relative_error(g, fd), 1e-6) << method_name(area) << " trial " << trial << " onset " << onset;
+    }
     ++tested;
   }
   EXPECT_GT(tested, 80);
@@ -87,12 +98,14 @@ TEST_P(MultiplierTerm, ExactHessianMatchesDifferencesOfTheGradient) {
     pg.multiplier = random_multiplier(rng);
     const PairVector x0 = to_vector(pg);
     if (!combinatorics_stable(pg, area, h)) continue;
-    const Derivatives d = pair_hessian(pg, area, PairHessian::Exact);
-    EXPECT_LT(st::relative_error(d.gradient, pair_gradient(pg, area)), 1e-14);
-    auto grad = [&](const Eigen::VectorXd& v) {
-      return Eigen::VectorXd(pair_gradient(from_vector(v, pg.depth, pg.multiplier), area));
-    };
-    EXPECT_LT(st::relative_error(d.hessian, st::fd_jacobian(grad, x0, h)), 1e-5) << method_name(area) << " trial " << trial;
+    for (const double onset : {0.0, 0.5 * moments(pg, area).max_depth}) {
+      pg.multiplier_onset = onset;
+      const Derivatives d = pair_hessian(pg, area, PairHessian::Exact);
+      EXPECT_LT(st::relative_error(d.gradient, pair_gradient(pg, area)), 1e-14);
+      auto grad = [&](const Eigen::VectorXd& v) { return Eigen::VectorXd(pair_gradient(at(v, pg), area)); };
+      EXPECT_LT(st::relative_error(d.hessian, st::fd_jacobian(grad, x0, h)), 1e-5)
+          << method_name(area) << " trial " << trial << " onset " << onset;
+    }
     ++tested;
   }
   EXPECT_GT(tested, 60);
@@ -108,6 +121,73 @@ TEST_P(MultiplierTerm, GaussNewtonKeepsTheExactGradient) {
     EXPECT_LT(st::relative_error(d.gradient, pair_gradient(pg, area)), 1e-12) << "trial " << trial;
     EXPECT_NEAR(d.value, pair_value(pg, area), 1e-12 * (1 + std::abs(d.value)));
   }
+}
+
+/// The pair with multipliers and the onset δ at half its deepest point, so that the support
+/// has points on both sides of g = δ (the split of the fan triangles is exercised).
+PairGeometry with_onset_inside(PairGeometry pg, std::mt19937& rng, bool area) {
+  pg.multiplier = random_multiplier(rng);
+  pg.multiplier_onset = 0.5 * moments(pg, area).max_depth;
+  return pg;
+}
+
+TEST_P(MultiplierTerm, OnsetRampLiesBetweenTheLinearTermAndItsShiftByHalfTheOnset) {
+  // g - δ/2 <= r(g) <= g and the integrand has 2 q r(g), so I0 - δ ∫ q <= Iδ <= I0 for q >= 0,
+  // with ∫ q = Σ q_k ∫ N_k.
+  const bool area = GetParam();
+  std::mt19937 rng(area ? 861 : 862);
+  int strict = 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    PairGeometry pg = with_onset_inside(random_method_pair(rng, area, trial), rng, area);
+    const double ramped = pair_value(pg, area);
+    const double delta = pg.multiplier_onset;
+    pg.multiplier_onset = 0;
+    const double linear = pair_value(pg, area);
+    const double integral_q = pg.multiplier.dot(moments(pg, area).vertex_area);
+    const double tol = 1e-12 * (1 + std::abs(linear));
+    EXPECT_LE(ramped, linear + tol) << method_name(area) << " trial " << trial;
+    EXPECT_GE(ramped, linear - delta * integral_q - tol) << method_name(area) << " trial " << trial;
+    if (ramped < linear - 1e-9 * (1 + linear)) ++strict;
+  }
+  EXPECT_GT(strict, 50);  // the ramp does change the value
+}
+
+TEST_P(MultiplierTerm, OnsetDeeperThanThePenetrationMakesTheTermQuadratic) {
+  // Every g < δ: 2 q r(g) = q g² / δ, so with a constant q, Iδ = (1 + q/δ) ∫ g².
+  const bool area = GetParam();
+  std::mt19937 rng(area ? 871 : 872);
+  for (int trial = 0; trial < 100; ++trial) {
+    PairGeometry pg = random_method_pair(rng, area, trial);
+    const double plain = pair_value(pg, area);
+    const double delta = 1.5 * moments(pg, area).max_depth + 1e-3;
+    pg.multiplier.setConstant(0.4);
+    pg.multiplier_onset = delta;
+    EXPECT_NEAR(pair_value(pg, area), (1 + 0.4 / delta) * plain, 1e-11 * (1 + plain)) << method_name(area) << " trial " << trial;
+  }
+}
+
+TEST(MultiplierOnset, ThePointsForceGrowsContinuouslyFromTheSurface) {
+  // One collocation point at depth g: dI/dg = 2 g + 2 q r'(g) is 2 q at g = 0 without the ramp
+  // (the jump that stalled Newton where a pressed point reaches the surface) and 0 with it.
+  std::mt19937 rng(901);
+  PairGeometry pg = random_method_pair(rng, /*area=*/false, 0);
+  pg.multiplier.setConstant(0.3);
+  const auto slope_at_surface = [&](double onset) {
+    pg.multiplier_onset = onset;
+    const collision::CollocationPoints points = collision::triangle_vertices_in_tet(pg.triangle, pg.tet);
+    // Scale the depths so the value at the first point is tiny: the slope in the depth scale s at
+    // s -> 0 is the slope of the integrand at g = 0.
+    const Eigen::Vector4d depth = pg.depth;
+    const auto value = [&](double s) {
+      PairGeometry q = pg;
+      q.depth = s * depth;
+      return point_integral(q, points);
+    };
+    const double s = 1e-7;
+    return (value(2 * s) - value(s)) / s;
+  };
+  EXPECT_GT(slope_at_surface(0.0), 1e-3);
+  EXPECT_LT(std::abs(slope_at_surface(0.05)), 1e-5);
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, MultiplierTerm, ::testing::Values(true, false),

@@ -182,4 +182,10 @@ void CollisionSet::set_pressure(VectorX pressure) {
   pressure_ = std::move(pressure);
 }
 
+void CollisionSet::set_pressure_onset(double onset) {
+  if (!std::isfinite(onset) || onset < 0)
+    throw InputError(fmt::format("contact pressure onset: {} (must be finite and >= 0)", onset));
+  pressure_onset_ = onset;
+}
+
 }  // namespace sinew::contact

@@ -100,6 +100,7 @@ class CollisionSet {
     PairGeometry pg = pair_geometry(*geometry_, x, p.triangle, p.tet);
     if (pressure_.size() > 0 && p.penalty > 0)
       for (int k = 0; k < 3; ++k) pg.multiplier[k] = pressure_[geometry_->surface(p.triangle, k)] / p.penalty;
+    pg.multiplier_onset = pressure_onset_;
     return pg;
   }
 
@@ -113,6 +114,11 @@ class CollisionSet {
   /// a wrong size or a negative or non-finite entry.
   void set_pressure(VectorX pressure);
   const VectorX& pressure() const { return pressure_; }
+  /// The depth δ (L, >= 0) over which the pressure ramps up from 0 at the surface to p
+  /// (PairGeometry::multiplier_onset; 0 = no ramp). Throws InputError for a negative or
+  /// non-finite δ.
+  void set_pressure_onset(double onset);
+  double pressure_onset() const { return pressure_onset_; }
 
  private:
   void check_size(const Positions& x, const char* caller) const;
@@ -138,6 +144,7 @@ class CollisionSet {
   std::unordered_set<std::uint64_t> pairs_in_pattern_;
   std::uint64_t revision_ = 0;
   VectorX pressure_;  ///< #V augmented Lagrangian pressures, or empty
+  double pressure_onset_ = 0;  ///< δ of the pressures' onset ramp (L)
 };
 
 }  // namespace sinew::contact

@@ -57,9 +57,11 @@ class ContactEnergy final : public Energy {
   /// pairs and the Hessian pattern do not.
   void set_penalty(const MatrixX& penalty) { collisions_.set_penalty(penalty); }
   /// Sets the augmented Lagrangian nodal pressures (#V, force / L², or 0 rows for none;
-  /// CollisionSet::set_pressure): each pair's energy gains ∫ p g da.
+  /// CollisionSet::set_pressure): each pair's energy gains ∫ p r(g) da, r the onset ramp.
   void set_pressure(VectorX pressure) { collisions_.set_pressure(std::move(pressure)); }
   const VectorX& pressure() const { return collisions_.pressure(); }
+  /// The depth δ (L) over which the pressures ramp up (CollisionSet::set_pressure_onset).
+  void set_pressure_onset(double onset) { collisions_.set_pressure_onset(onset); }
 
   /// The collision set at the last update() (pairs, pattern, times).
   const CollisionSet& collisions() const { return collisions_; }

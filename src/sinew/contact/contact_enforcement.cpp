@@ -11,33 +11,27 @@ VectorX updated_contact_pressure(const CollisionSet& collisions) {
   const ContactGeometry& g = collisions.geometry();
   const Index nodes = g.depth.size();
   const Positions& x = collisions.positions();
-  // Per node: Σ ε ∫ N_i g da and Σ ∫ N_i da, accumulated per thread.
-  struct Sums {
-    VectorX pressure_integral, area;
-  };
-  tbb::enumerable_thread_specific<Sums> local([&] { return Sums{VectorX::Zero(nodes), VectorX::Zero(nodes)}; });
+  // Per node: the largest ε g over the supports of its triangles' pairs (-1: no pair), per thread.
+  tbb::enumerable_thread_specific<VectorX> local([&] { return VectorX::Constant(nodes, -1.0); });
   const auto& pairs = collisions.pairs();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 64), [&](const auto& range) {
-    Sums& s = local.local();
+    VectorX& deepest = local.local();
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
       const ActivePair& p = pairs[k];
       const PolygonMoments m = collisions.integrator().moments(collisions.pair_geometry_at(x, p), p.support);
+      if (!(m.area > 0)) continue;
       for (int v = 0; v < 3; ++v) {
         const Index node = g.surface(p.triangle, v);
-        s.pressure_integral[node] += p.penalty * m.vertex_depth_integral[v];
-        s.area[node] += m.vertex_area[v];
+        deepest[node] = std::max(deepest[node], p.penalty * m.max_depth);
       }
     }
   });
-  VectorX integral = VectorX::Zero(nodes), area = VectorX::Zero(nodes);
-  for (const Sums& s : local) {
-    integral += s.pressure_integral;
-    area += s.area;
-  }
+  VectorX deepest = VectorX::Constant(nodes, -1.0);
+  for (const VectorX& d : local) deepest = deepest.cwiseMax(d);
   const VectorX& old = collisions.pressure();
   VectorX pressure = VectorX::Zero(nodes);
   for (Index i = 0; i < nodes; ++i)
-    if (area[i] > 0) pressure[i] = std::max(0.0, (old.size() > 0 ? old[i] : 0.0) + integral[i] / area[i]);
+    if (deepest[i] >= 0) pressure[i] = (old.size() > 0 ? old[i] : 0.0) + deepest[i];
   return pressure;
 }
 

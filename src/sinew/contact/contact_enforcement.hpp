@@ -5,10 +5,10 @@
 ///  - adaptive penalty: between load or time steps, the penalty of every body pair whose
 ///    largest penetration exceeds a tolerance grows in proportion (penetration ~ 1 / ε);
 ///  - augmented Lagrangian (Uzawa): a contact pressure p per surface node, interpolated
-///    linearly over each triangle, adds ∫ p g da to the pair energies (pair_integral.hpp);
-///    after each converged Newton solve p takes the value of the total pressure p + ε g
-///    averaged over each node's contact area, and the step is solved again until the largest
-///    penetration is below the tolerance.
+///    linearly over each triangle, adds ∫ p r(g) da to the pair energies, r a C¹ ramp from
+///    the surface to the depth δ (pair_integral.hpp); after each converged Newton solve p_i
+///    grows by ε times the deepest penetration on node i's triangles, and the step is solved
+///    again until the largest penetration is below the tolerance.
 /// Free functions over a CollisionSet and a ContactReport: nothing here knows the FE model.
 /// Units: lengths L, penalties force / L³, pressures force / L².
 
@@ -43,10 +43,13 @@ struct ContactEnforcementOptions {
 };
 
 /// The Uzawa update of the nodal contact pressures of `collisions` at its current positions:
-/// for each surface node i, p_i + Σ ε ∫ N_i g da / Σ ∫ N_i da over the pairs of its triangles
-/// (N_i the node's linear shape function on the triangle), or 0 where none of its triangles'
-/// area penetrates (the node has left contact). Starts from collisions.pressure(), or 0.
-/// Returns #V pressures (force / L²).
+/// for each surface node i, p_i + ε g_i, g_i the deepest penetration on the supports of the
+/// pairs of its triangles, or 0 where none of its triangles' area penetrates (the node has left
+/// contact). Starts from collisions.pressure(), or 0. Returns #V pressures (force / L²).
+/// The deepest point, not the area average: at a corner the penetration concentrates at one
+/// point, and the average grew the pressure there too slowly (docs/contact.md, "Augmented
+/// Lagrangian"); a pressure larger than needed only lets its points rest shallower than the
+/// onset depth δ (pair_integral.hpp).
 VectorX updated_contact_pressure(const CollisionSet& collisions);
 
 /// The body-pair penalties after one adaptive step: an entry (a, b) whose largest penetration

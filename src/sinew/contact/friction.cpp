@@ -69,8 +69,9 @@ std::vector<FrictionPoint> friction_points(const ContactEnergy& contact, const M
     // The sliding surface is the triangle's: its normal, not the depth gradient of the tet, which
     // in a coarse mesh points toward the body's middle rather than across the surface.
     const Vector3 normal = triangle_normal / twice_area;
-    // The pressure the pair exerts is (ε g + p) |∇g|: the force density of (ε/2) g² + p g on a
-    // point of the triangle is (ε g + p) ∇g.
+    // The pressure the pair exerts is (ε g + p r'(g)) |∇g|: the force density of
+    // (ε/2) g² + p r(g) on a point of the triangle is (ε g + p r'(g)) ∇g, r'(g) = min(1, g / δ)
+    // with the multipliers' onset ramp (pair_integral.hpp).
     const double gradient_norm = depth_gradient(pg).norm();
     FrictionPoint point;
     point.triangle = pair.triangle;
@@ -82,7 +83,10 @@ std::vector<FrictionPoint> friction_points(const ContactEnergy& contact, const M
       for (int k = 0; k < 3; ++k) nodal_pressure[k] = pressure[g.surface(pair.triangle, k)];
     auto add = [&](const Vector3& beta, const Eigen::Vector4d& xi, double weight) {
       const double depth = xi.dot(pg.depth);
-      const double normal_force = weight * (pair.penalty * depth + beta.dot(nodal_pressure)) * gradient_norm;
+      const double onset = pg.multiplier_onset;
+      const double ramp_slope = onset > 0 ? std::min(1.0, depth / onset) : 1.0;
+      const double normal_force =
+          weight * (pair.penalty * depth + ramp_slope * beta.dot(nodal_pressure)) * gradient_norm;
       if (!(normal_force > 0)) return;
       point.triangle_weights = beta;
       point.tet_weights = xi;

@@ -181,24 +181,104 @@ S triangle_square_integral(const S& area, const S& a, const S& b, const S& c) {
   return area * (a * a + b * b + c * c + sum * sum) * (1.0 / 12.0);
 }
 
-/// ∫ (g² + 2 q g) da over the fan.
+/// The value of a scalar of any of the types above (for comparisons).
 template <class S>
-S fan_integral(const Fan<S>& fan) {
+double value_of(const S& s) {
+  if constexpr (std::is_same_v<S, double>) {
+    return s;
+  } else if constexpr (requires { s.v(); }) {
+    return s.v();
+  } else {
+    return s.v;
+  }
+}
+
+/// ∫ over a triangle of q g² for affine q and g with vertex values (q0, q1, q2), (g0, g1, g2):
+/// A/60 (Q G² + 2 G Σ qᵢgᵢ + Q Σ gᵢ² + 2 Σ qᵢgᵢ²), Q = Σ qᵢ, G = Σ gᵢ (from ∫ λᵢλⱼλₖ da).
+template <class S>
+S triangle_cubic_integral(const S& area, const std::array<S, 3>& q, const std::array<S, 3>& g) {
+  const S Q = q[0] + q[1] + q[2], G = g[0] + g[1] + g[2];
+  const S qg = q[0] * g[0] + q[1] * g[1] + q[2] * g[2];
+  const S gg = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+  const S qgg = q[0] * g[0] * g[0] + q[1] * g[1] * g[1] + q[2] * g[2] * g[2];
+  return area * (Q * G * G + 2.0 * G * qg + Q * gg + 2.0 * qgg) * (1.0 / 60.0);
+}
+
+/// ∫ q r(g) da over one triangle of area A, q and g affine with the vertex values given, r the
+/// onset ramp of width δ > 0 (pair_integral.hpp): the triangle is split along g = δ into the
+/// part below (∫ q g² / (2δ)) and the part above (∫ q (g − δ/2)), each integrated exactly.
+/// The split points lie on the edges at the parameter t where g = δ; the pieces' areas are
+/// fractions of A in t, so everything stays a smooth function of the vertex values.
+template <class S>
+S triangle_ramp_integral(const S& area, const std::array<S, 3>& q, const std::array<S, 3>& g, double delta) {
+  const auto below_part = [&](const S& a, const std::array<S, 3>& qs, const std::array<S, 3>& gs) {
+    return triangle_cubic_integral(a, qs, gs) * (0.5 / delta);
+  };
+  const auto above_part = [&](const S& a, const std::array<S, 3>& qs, const std::array<S, 3>& gs) {
+    return triangle_product_integral(a, qs[0], qs[1], qs[2], gs[0] - 0.5 * delta, gs[1] - 0.5 * delta,
+                                     gs[2] - 0.5 * delta);
+  };
+  int above = 0;
+  for (int k = 0; k < 3; ++k) above += value_of(g[static_cast<std::size_t>(k)]) >= delta ? 1 : 0;
+  if (above == 0) return below_part(area, q, g);
+  if (above == 3) return above_part(area, q, g);
+  // The vertex alone on its side (a), then the other two (b, c) in cyclic order.
+  int lone = 0;
+  for (int k = 0; k < 3; ++k) {
+    const bool is_above = value_of(g[static_cast<std::size_t>(k)]) >= delta;
+    if (is_above == (above == 1)) lone = k;
+  }
+  const auto a = static_cast<std::size_t>(lone), b = static_cast<std::size_t>((lone + 1) % 3),
+             c = static_cast<std::size_t>((lone + 2) % 3);
+  // g crosses δ strictly between a and b and between a and c: g[b] - g[a] != 0.
+  const S tb = (S(delta) - g[a]) / (g[b] - g[a]);
+  const S tc = (S(delta) - g[a]) / (g[c] - g[a]);
+  const S qb = q[a] + (q[b] - q[a]) * tb, qc = q[a] + (q[c] - q[a]) * tc;
+  const S at_delta(delta);
+  // Pieces: (a, Pb, Pc) with area tb tc A; (Pb, b, c) with (1 - tb) A; (Pb, c, Pc) with tb (1 - tc) A.
+  const std::array<S, 3> q_lone{q[a], qb, qc}, g_lone{g[a], at_delta, at_delta};
+  const std::array<S, 3> q_first{qb, q[b], q[c]}, g_first{at_delta, g[b], g[c]};
+  const std::array<S, 3> q_second{qb, q[c], qc}, g_second{at_delta, g[c], at_delta};
+  const S lone_area = area * tb * tc, first_area = area * (S(1.0) - tb), second_area = area * tb * (S(1.0) - tc);
+  if (above == 1) {  // a above, b and c below
+    return above_part(lone_area, q_lone, g_lone) + below_part(first_area, q_first, g_first) +
+           below_part(second_area, q_second, g_second);
+  }
+  return below_part(lone_area, q_lone, g_lone) + above_part(first_area, q_first, g_first) +
+         above_part(second_area, q_second, g_second);
+}
+
+/// ∫ (g² + 2 q r(g)) da over the fan (r(g) = g without an onset ramp).
+template <class S>
+S fan_integral(const Fan<S>& fan, double onset) {
   S total(0.0);
   for (int j = 1; j + 1 < fan.count; ++j) {
     const auto J = static_cast<std::size_t>(j);
     total += triangle_square_integral(fan.area[J], fan.g[0], fan.g[J], fan.g[J + 1]);
-    if (fan.has_multiplier)
+    if (!fan.has_multiplier) continue;
+    if (onset > 0) {
+      total += triangle_ramp_integral(fan.area[J], {fan.q[0], fan.q[J], fan.q[J + 1]},
+                                      {fan.g[0], fan.g[J], fan.g[J + 1]}, onset) * 2.0;
+    } else {
       total += triangle_product_integral(fan.area[J], fan.g[0], fan.g[J], fan.g[J + 1], fan.q[0], fan.q[J],
                                          fan.q[J + 1]) * 2.0;
+    }
   }
   return total;
+}
+
+/// The onset ramp r(g) of a point (pair_integral.hpp).
+template <class S>
+S onset_ramp(const S& g, double onset) {
+  if (!(onset > 0)) return g;
+  if (value_of(g) >= onset) return g - 0.5 * onset;
+  return g * g * (0.5 / onset);
 }
 
 template <class S>
 S area_integral_t(const PairGeometry& pair, const collision::ClipPolygon& polygon) {
   if (polygon.count < 3) return S(0.0);
-  return fan_integral(make_fan(make_nodes<S>(pair), pair, polygon));
+  return fan_integral(make_fan(make_nodes<S>(pair), pair, polygon), pair.multiplier_onset);
 }
 
 template <class S>
@@ -212,7 +292,7 @@ S point_integral_t(const PairGeometry& pair, const collision::CollocationPoints&
   for (int k = 0; k < points.count; ++k) {
     const int v = points.vertex[static_cast<std::size_t>(k)];
     const S g = field.at(n.tri[static_cast<std::size_t>(v)]);
-    total += weight * g * (g + S(2.0 * pair.multiplier[v]));
+    total += weight * (g * g + S(2.0 * pair.multiplier[v]) * onset_ramp(g, pair.multiplier_onset));
   }
   return total;
 }
@@ -281,10 +361,10 @@ double area_integral_hessian(const PairGeometry& pair, const collision::ClipPoly
   hessian.setZero();
   gradient.setZero();
   if (polygon.count < 3) return 0;
-  // The multiplier term 2 q g contributes to the gradient (through fan_integral) but not to
+  // The multiplier term 2 q r(g) contributes to the gradient (through fan_integral) but not to
   // this Hessian: Gauss-Newton keeps the positive part.
   const Fan<D1> fan = make_fan(make_nodes<D1>(pair), pair, polygon);
-  const D1 I = fan_integral(fan);
+  const D1 I = fan_integral(fan, pair.multiplier_onset);
   gradient = I.d;
   // Σ_j w_j (∇a∇aᵀ + ∇b∇bᵀ + ∇c∇cᵀ + ∇s∇sᵀ) = Gᵀ C G, G the count x 21 depth gradients at the
   // polygon vertices and C the count x count weights (cheaper than the rank-one updates).
@@ -379,7 +459,7 @@ double point_integral_hessian(const PairGeometry& pair, const collision::Colloca
   for (int k = 0; k < points.count; ++k) {
     const int v = points.vertex[static_cast<std::size_t>(k)];
     const D1 g = field.at(n.tri[static_cast<std::size_t>(v)]);
-    total += weight * g * (g + D1(2.0 * pair.multiplier[v]));
+    total += weight * (g * g + D1(2.0 * pair.multiplier[v]) * onset_ramp(g, pair.multiplier_onset));
     hessian.noalias() += (2.0 * weight.v) * g.d * g.d.transpose();
   }
   gradient = total.d;

@@ -8,9 +8,12 @@
 /// current configuration. The pair's energy is (ε/2) I.
 ///
 /// With augmented Lagrangian multipliers (docs/contact.md, "Augmented Lagrangian"; dissertation
-/// §10.1.2) the integrand g² becomes g² + 2 q g, q the contact pressure p interpolated linearly
+/// §10.1.2) the integrand g² becomes g² + 2 q r(g), q the contact pressure p interpolated linearly
 /// over the triangle from its vertices and divided by the pair's penalty (q = p / ε, a length):
-/// the pair's energy (ε/2) I is then (ε/2) ∫ g² + ∫ p g.
+/// the pair's energy (ε/2) I is then (ε/2) ∫ g² + ∫ p r(g). r is the multiplier's onset ramp of
+/// width δ (PairGeometry::multiplier_onset): r(g) = g² / (2δ) for g < δ, g − δ/2 beyond, so the
+/// pressure p r'(g) grows from 0 at the surface to p at depth δ and the energy stays C¹ where a
+/// point leaves the body (with δ = 0, r(g) = g and the force jumps from 0 to p there).
 ///
 /// Local variables (21): the three triangle vertices, then the four tet vertices, x y z each:
 /// variable 3 k + c is coordinate c of local node k (k = 0..2 triangle, 3..6 tet vertex k - 3).
@@ -38,6 +41,9 @@ struct PairGeometry {
   /// q = p / ε at the triangle vertices (L): the augmented Lagrangian pressure over the pair's
   /// penalty; zero without multipliers.
   Vector3 multiplier = Vector3::Zero();
+  /// δ (L, >= 0): the depth over which the multiplier's pressure ramps up from 0 to p (see
+  /// above); 0 = no ramp.
+  double multiplier_onset = 0;
 };
 
 /// How the Hessian of a pair is formed.

@@ -15,6 +15,10 @@ ContactRefinement::ContactRefinement(contact::ContactEnergy& contact, contact::C
   if (penalty && !friction_) throw std::invalid_argument("ContactRefinement: the plain penalty needs no refinement");
   if (!penalty && !(options_.penetration_tolerance > 0))
     throw std::invalid_argument("ContactRefinement: the penetration tolerance must be > 0");
+  // Under full pressure a point then rests at most δ deep, half the tolerance (docs/contact.md,
+  // "Augmented Lagrangian").
+  if (options_.method == contact::ContactEnforcement::AugmentedLagrangian)
+    contact_.set_pressure_onset(kPressureOnsetFraction * options_.penetration_tolerance);
 }
 
 bool ContactRefinement::refine(const fem::State& converged) {
@@ -30,6 +34,8 @@ bool ContactRefinement::refine(const fem::State& converged) {
       update_fraction_ = 1;
       contact_.set_pressure(updated_pressure_);
       ++updates_;
+      logger().info("contact: multiplier update {}: largest penetration {:.3g} (tolerance {:.3g}), largest pressure {:.3g}",
+                    updates_, last_max_penetration_, options_.penetration_tolerance, updated_pressure_.maxCoeff());
       updated_ = true;
       again = true;
     }

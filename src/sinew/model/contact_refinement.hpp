@@ -19,6 +19,10 @@ struct FrictionRefresh {
 
 class ContactRefinement final : public solver::StepRefinement {
  public:
+  /// The augmented Lagrangian's pressure onset δ (ContactEnergy::set_pressure_onset) as a
+  /// fraction of the penetration tolerance: a point carrying its whole pressure through the
+  /// multiplier rests less than δ deep, so the updates can end below the tolerance.
+  static constexpr double kPressureOnsetFraction = 0.5;
   /// `contact` (and `friction`, when not null) must outlive the refinement. Unless there is
   /// friction, options.method must not be Penalty; a method other than Penalty needs
   /// penetration_tolerance > 0 (std::invalid_argument otherwise). Clears the contact's pressures
