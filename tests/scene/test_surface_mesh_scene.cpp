@@ -86,6 +86,27 @@ TEST(SurfaceMeshScene, UnknownSurfaceNameIsAnInputError) {
   }
 }
 
+TEST(SurfaceMeshScene, SizeZoneTakesACapsuleAndNeedsSurfacesOrOne) {
+  json scene = cube_scene("/nonexistent");
+  scene["bodies"][0]["mesh"]["surfaces"]["size_zones"] =
+      json::parse(R"([{"capsule": {"a": [5, 5, 3], "b": [5, 5, 7], "radius": 1}, "size": 1, "grading": 0.5}])");
+  const SceneConfig config = parse_scene(scene, "/nonexistent");
+  const auto& zones = config.bodies.at(0).mesh.surfaces->options.size_zones;
+  ASSERT_EQ(zones.size(), 1u);
+  ASSERT_TRUE(zones[0].capsule.has_value());
+  EXPECT_EQ(zones[0].capsule->b, Vector3(5, 5, 7));
+  EXPECT_EQ(zones[0].capsule->radius, 1);
+  EXPECT_TRUE(zones[0].surfaces.empty());
+  EXPECT_EQ(zones[0].grading, 0.5);
+  scene["bodies"][0]["mesh"]["surfaces"]["size_zones"] = json::parse(R"([{"size": 1}])");
+  try {
+    parse_scene(scene, "/nonexistent");
+    ADD_FAILURE() << "a zone without surfaces or capsule was accepted";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("bodies[0].mesh.surfaces.size_zones[0]: a size zone needs \"surfaces\" or a \"capsule\""));
+  }
+}
+
 TEST(SurfaceMeshScene, OpenSurfaceIsRefusedUnlessRepaired) {
   const sinew::testing::TempDir dir;
   sinew::testing::Shape open = sinew::testing::unit_cube();

@@ -147,8 +147,60 @@ TEST(Tetrahedralize, UnreachableQualityBoundIsRejected) {
               AllOf(HasSubstr("dihedral"), HasSubstr("min_dihedral_deg")));
 }
 
+TEST(Tetrahedralize, CapsuleSizeZoneRefinesItsInsideAndGradesAway) {
+  // The block at element_size 4 with a capsule zone of size 1 round the segment (3,6,6)-(9,6,6),
+  // radius 1.5: the tets in the capsule are a fraction of the plain mesh's, and they grow with the
+  // distance from it (1 + 0.3 d: 2.5 to 3.1 more than 5 away, where Mesh_3 makes them smaller
+  // than asked, near the block's faces).
+  TetrahedralizeOptions options{.element_size = 4, .what = "block"};
+  const ZoneCapsule capsule{.a = Vector3(3, 6, 6), .b = Vector3(9, 6, 6), .radius = 1.5};
+  options.size_zones.push_back({.capsule = capsule, .size = 1, .grading = 0.3});
+  TetrahedralizeReport report;
+  const mesh::TetMesh fine = tetrahedralize({{"block", kBlock}}, {}, options, &report);
+  print("block 12, element_size 4, capsule zone 1", fine, report);
+  const mesh::TetMesh plain = tetrahedralize({{"block", kBlock}}, {}, {.element_size = 4, .what = "block"});
+  EXPECT_GT(fine.num_tets(), 2 * plain.num_tets());
+  // Mean first-edge length of the tets whose centroid is at a distance from the capsule in [lo, hi).
+  const auto mean_edge = [&](const mesh::TetMesh& m, double lo, double hi) {
+    double sum = 0;
+    int count = 0;
+    for (Index t = 0; t < m.num_tets(); ++t) {
+      Vector3 centroid = Vector3::Zero();
+      for (int k = 0; k < 4; ++k) centroid += m.rest.row(m.tets(t, k)).transpose() / 4;
+      const double d = capsule_distance(capsule, centroid);
+      if (d < lo || d >= hi) continue;
+      sum += (m.rest.row(m.tets(t, 0)) - m.rest.row(m.tets(t, 1))).norm();
+      ++count;
+    }
+    EXPECT_GT(count, 4) << "no tets at distance " << lo << " to " << hi;
+    return sum / std::max(count, 1);
+  };
+  const double inside = mean_edge(fine, 0, 1e-12), far = mean_edge(fine, 5, 1e9);
+  std::cout << "mean edge in the capsule " << inside << ", more than 5 away " << far << ", plain mesh "
+            << mean_edge(plain, 0, 1e9) << "\n";
+  EXPECT_LT(inside, 0.6 * mean_edge(plain, 0, 1e9));  // measured 1.34 against 2.65
+  EXPECT_GT(far, 1.2 * inside);                        // measured 1.78: the grading
+  EXPECT_NEAR(report.region_volumes.at(0), 12 * 12 * 12, 0.01 * 12 * 12 * 12);  // the box's edges are rounded
+}
+
+TEST(Tetrahedralize, CapsuleDistanceIsZeroInsideAndToTheSurfaceOutside) {
+  const ZoneCapsule c{.a = Vector3(0, 0, 0), .b = Vector3(10, 0, 0), .radius = 2};
+  EXPECT_EQ(capsule_distance(c, Vector3(5, 1, 1)), 0);
+  EXPECT_DOUBLE_EQ(capsule_distance(c, Vector3(5, 0, 5)), 3);   // beside the axis
+  EXPECT_DOUBLE_EQ(capsule_distance(c, Vector3(-4, 0, 0)), 2);  // beyond an end: the round cap
+  EXPECT_DOUBLE_EQ(capsule_distance(c, Vector3(13, 4, 0)), 3);
+  const ZoneCapsule ball{.a = Vector3(1, 1, 1), .b = Vector3(1, 1, 1), .radius = 1};  // a = b: a ball
+  EXPECT_DOUBLE_EQ(capsule_distance(ball, Vector3(1, 1, 4)), 2);
+}
+
 TEST(Tetrahedralize, BadOptionsAndPartsAreRejected) {
   EXPECT_THAT(rejection({}, {}, {.element_size = 1, .what = "knee"}), AllOf(HasSubstr("knee"), HasSubstr("no parts")));
+  TetrahedralizeOptions empty_zone{.element_size = 4, .what = "knee"};
+  empty_zone.size_zones.push_back({.size = 1});
+  EXPECT_THAT(rejection({{"block", kBlock}}, {}, empty_zone), AllOf(HasSubstr("knee"), HasSubstr("needs surfaces or a capsule")));
+  TetrahedralizeOptions flat_capsule{.element_size = 4};
+  flat_capsule.size_zones.push_back({.capsule = ZoneCapsule{.radius = 0}, .size = 1});
+  EXPECT_THAT(rejection({{"block", kBlock}}, {}, flat_capsule), HasSubstr("capsule needs a radius > 0"));
   EXPECT_THAT(rejection({{"block", kBlock}}, {}, {.element_size = 0}), HasSubstr("element_size must be > 0"));
   EXPECT_THAT(rejection({{"bone", {.kind = Kind::Surface, .surfaces = {"femur"}}}}, {}, {.element_size = 1}),
               AllOf(HasSubstr("part \"bone\""), HasSubstr("unknown surface \"femur\"")));

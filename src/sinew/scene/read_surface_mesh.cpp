@@ -117,9 +117,16 @@ SurfaceMeshConfig read_surface_mesh(const json& j, const std::string& path, Read
   const json& zones = j.at("size_zones");
   for (std::size_t i = 0; i < zones.size(); ++i) {
     surface::SizeZone zone;
-    zone.surfaces = zones[i].at("surfaces").get<std::vector<std::string>>();
-    zone.size = zones[i].at("size").get<double>();
-    zone.grading = zones[i].at("grading").get<double>();
+    const json& z = zones[i];
+    if (z.contains("surfaces")) zone.surfaces = z.at("surfaces").get<std::vector<std::string>>();
+    if (z.contains("capsule")) {
+      const json& c = z.at("capsule");
+      zone.capsule = surface::ZoneCapsule{to_vector3(c.at("a")), to_vector3(c.at("b")), c.at("radius").get<double>()};
+    }
+    if (zone.surfaces.empty() && !zone.capsule)
+      errors.add(json_path_index(json_path_key(path, "size_zones"), i), "a size zone needs \"surfaces\" or a \"capsule\"");
+    zone.size = z.at("size").get<double>();
+    zone.grading = z.at("grading").get<double>();
     for (const std::string& name : zone.surfaces) used.emplace_back(name, json_path_index(json_path_key(path, "size_zones"), i));
     config.options.size_zones.push_back(std::move(zone));
   }

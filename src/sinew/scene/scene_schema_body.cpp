@@ -74,11 +74,18 @@ SchemaNode surfaces_mesh_schema() {
                        }))
               .required()
               .items(1),
-          array("size_zones", "finer elements near some surfaces: size + grading x distance, up to element_size",
-                object("", "a size zone",
+          array("size_zones",
+                "finer elements near some surfaces or in a capsule: size + grading x distance, up to element_size",
+                object("", "a size zone: surfaces, a capsule, or both",
                        {
-                           array("surfaces", "surface names", string("", "a surface name").non_empty()).required().items(1),
-                           number("size", "element size on those surfaces (length)").required().min(kMinElementSize).max(kMaxLength),
+                           array("surfaces", "surface names", string("", "a surface name").non_empty()).items(1),
+                           object("capsule", "the points within radius of the segment a-b (distance 0 inside)",
+                                  {
+                                      vec3("a", "one end of the axis (length)").required().within(kMaxLength),
+                                      vec3("b", "the other end (length)").required().within(kMaxLength),
+                                      number("radius", "radius (length)").required().above(0).max(kMaxLength),
+                                  }),
+                           number("size", "element size on those surfaces and in the capsule (length)").required().min(kMinElementSize).max(kMaxLength),
                            number("grading", "growth of the size per unit distance (dimensionless)")
                                .min(0)
                                .max(100)

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -51,6 +52,7 @@ struct SizeField {
         if (gap.norm() > reach) continue;  // too far to matter
         distance = std::min(distance, std::abs(surface.signed_distance(x)));
       }
+      if (zone.capsule) distance = std::min(distance, capsule_distance(*zone.capsule, x));
       if (std::isfinite(distance)) size = std::min(size, zone.size + zone.grading * distance);
     }
     return size;
@@ -191,6 +193,13 @@ double surface_area(const SurfaceMesh& mesh) {
 
 }  // namespace
 
+double capsule_distance(const ZoneCapsule& capsule, const Vector3& x) {
+  const Vector3 axis = capsule.b - capsule.a;
+  const double length_sq = axis.squaredNorm();
+  const double t = length_sq > 0 ? std::clamp((x - capsule.a).dot(axis) / length_sq, 0.0, 1.0) : 0.0;
+  return std::max(0.0, (x - (capsule.a + t * axis)).norm() - capsule.radius);
+}
+
 double estimated_tets(const std::vector<SolidPart>& parts, const SurfaceLibrary& library,
                       const TetrahedralizeOptions& options) {
   constexpr double kTetsPerEdgeCubed = 8.48528137423857;  // 6 sqrt(2): regular tets of edge h per h^3
@@ -202,6 +211,11 @@ double estimated_tets(const std::vector<SolidPart>& parts, const SurfaceLibrary&
     for (const std::string& name : zone.surfaces) {
       if (library.count(name) == 0) continue;
       tets += kTetsPerEdgeCubed * surface_area(library.at(name).mesh()) / (zone.size * zone.size);
+    }
+    if (zone.capsule) {
+      const double r = zone.capsule->radius, length = (zone.capsule->b - zone.capsule->a).norm();
+      const double volume = std::numbers::pi * r * r * length + 4.0 / 3.0 * std::numbers::pi * r * r * r;
+      tets += kTetsPerEdgeCubed * volume / std::pow(zone.size, 3);
     }
   }
   return tets;
@@ -219,6 +233,9 @@ mesh::TetMesh tetrahedralize(const std::vector<SolidPart>& parts, const SurfaceL
     for (const std::string& name : zone.surfaces) {
       if (library.count(name) == 0) throw InputError(what + ": a size zone names an unknown surface \"" + name + "\"");
     }
+    if (zone.surfaces.empty() && !zone.capsule) throw InputError(what + ": a size zone needs surfaces or a capsule");
+    if (zone.capsule && !(zone.capsule->radius > 0 && std::isfinite(zone.capsule->radius)))
+      throw InputError(fmt::format("{}: a size zone's capsule needs a radius > 0, not {}", what, zone.capsule->radius));
   }
   if (options.max_tets > 0) {
     const double estimate = estimated_tets(parts, library, options);

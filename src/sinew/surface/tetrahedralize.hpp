@@ -3,6 +3,7 @@
 /// A multi-region tetrahedral mesh from solids bounded by closed surfaces (CGAL Mesh_3 on a
 /// labelled domain; docs/surface-input.md, meshing).
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,13 +19,25 @@ struct SolidPart {
   Solid solid;
 };
 
-/// Finer elements near some surfaces: the size at a point is
-/// min(element_size, size + grading * distance to the nearest of `surfaces`).
+/// The points within `radius` of the segment a-b (length): a size zone that is not a surface,
+/// such as the insertion of a tendon.
+struct ZoneCapsule {
+  Vector3 a = Vector3::Zero(), b = Vector3::Zero();
+  double radius = 0;
+};
+
+/// Finer elements near some surfaces or inside a capsule: the size at a point is
+/// min(element_size, size + grading * distance to the nearest of `surfaces` and `capsule`), the
+/// distance to the capsule being 0 inside it. A zone has surfaces, a capsule or both.
 struct SizeZone {
   std::vector<std::string> surfaces;
-  double size = 1;     ///< element size on those surfaces (length), > 0
+  std::optional<ZoneCapsule> capsule;
+  double size = 1;     ///< element size on those surfaces and in the capsule (length), > 0
   double grading = 0.3;  ///< growth of the size per unit distance from them (dimensionless), >= 0
 };
+
+/// Distance from x to the capsule, 0 inside it (length).
+double capsule_distance(const ZoneCapsule& capsule, const Vector3& x);
 
 struct TetrahedralizeOptions {
   double element_size = 1;     ///< target tet edge length away from size zones (length), > 0
