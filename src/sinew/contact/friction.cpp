@@ -83,10 +83,9 @@ std::vector<FrictionPoint> friction_points(const ContactEnergy& contact, const M
       for (int k = 0; k < 3; ++k) nodal_pressure[k] = pressure[g.surface(pair.triangle, k)];
     auto add = [&](const Vector3& beta, const Eigen::Vector4d& xi, double weight) {
       const double depth = xi.dot(pg.depth);
-      const double onset = pg.multiplier_onset;
-      const double ramp_slope = onset > 0 ? std::min(1.0, depth / onset) : 1.0;
       const double normal_force =
-          weight * (pair.penalty * depth + ramp_slope * beta.dot(nodal_pressure)) * gradient_norm;
+          weight * (pair.penalty * depth + onset_ramp_slope(depth, pg.multiplier_onset) * beta.dot(nodal_pressure)) *
+          gradient_norm;
       if (!(normal_force > 0)) return;
       point.triangle_weights = beta;
       point.tet_weights = xi;

@@ -407,6 +407,8 @@ PolygonMoments area_moments(const PairGeometry& pair, const collision::ClipPolyg
   return m;
 }
 
+double onset_ramp_slope(double g, double onset) { return onset > 0 ? std::min(1.0, g / onset) : 1.0; }
+
 Vector3 depth_gradient(const PairGeometry& pair) {
   const Nodes<double> n = make_nodes<double>(pair);
   const Vec<double> e1 = n.tet[1] - n.tet[0], e2 = n.tet[2] - n.tet[0], e3 = n.tet[3] - n.tet[0];

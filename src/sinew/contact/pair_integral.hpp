@@ -83,6 +83,10 @@ struct PolygonMoments {
 };
 PolygonMoments area_moments(const PairGeometry& pair, const collision::ClipPolygon& polygon);
 
+/// r'(g) = min(1, g / δ) of the multipliers' onset ramp (1 for δ = 0): the fraction of the
+/// pressure p a point at depth g (L) carries.
+double onset_ramp_slope(double g, double onset);
+
 /// The gradient of the tet's affine depth field ∇g_e (dimensionless; zero for a flat tet).
 Vector3 depth_gradient(const PairGeometry& pair);
 /// The triangle's linear shape functions (N0, N1, N2) at a point y of its plane.

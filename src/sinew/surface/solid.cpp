@@ -14,13 +14,6 @@ namespace {
 
 const ClosedSurface& find_surface(const SurfaceLibrary& library, const std::string& name) { return library.at(name); }
 
-double segment_distance(const Vector3& a, const Vector3& b, const Vector3& x) {
-  const Vector3 ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double s = length2 > 0 ? std::clamp((x - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return (x - (a + s * ab)).norm();
-}
-
 /// Orthonormal frame of an ellipsoid: columns u, v, u x v.
 Matrix3 ellipsoid_frame(const Solid& solid) {
   const Vector3 u = solid.axis_u.normalized();
@@ -38,6 +31,13 @@ Bounds infinite_bounds() {
 }
 
 }  // namespace
+
+double segment_distance(const Vector3& a, const Vector3& b, const Vector3& x) {
+  const Vector3 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double s = length2 > 0 ? std::clamp((x - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (x - (a + s * ab)).norm();
+}
 
 void check_solid(const Solid& solid, const SurfaceLibrary& library, const std::string& what) {
   using Kind = Solid::Kind;

@@ -65,6 +65,9 @@ bool solid_contains(const Solid& solid, const SurfaceLibrary& library, const Vec
 /// Bounds that contain the solid (possibly larger; unbounded for a lone half-space).
 Bounds solid_bounds(const Solid& solid, const SurfaceLibrary& library);
 
+/// The distance from x to the segment a-b (length; a = b: to the point a).
+double segment_distance(const Vector3& a, const Vector3& b, const Vector3& x);
+
 /// The distance from `point` to the union of the named surfaces, negative inside (length).
 double union_signed_distance(const std::vector<std::string>& surfaces, const SurfaceLibrary& library,
                              const Vector3& point);

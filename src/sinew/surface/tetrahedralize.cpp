@@ -194,10 +194,7 @@ double surface_area(const SurfaceMesh& mesh) {
 }  // namespace
 
 double capsule_distance(const ZoneCapsule& capsule, const Vector3& x) {
-  const Vector3 axis = capsule.b - capsule.a;
-  const double length_sq = axis.squaredNorm();
-  const double t = length_sq > 0 ? std::clamp((x - capsule.a).dot(axis) / length_sq, 0.0, 1.0) : 0.0;
-  return std::max(0.0, (x - (capsule.a + t * axis)).norm() - capsule.radius);
+  return std::max(0.0, segment_distance(capsule.a, capsule.b, x) - capsule.radius);
 }
 
 double estimated_tets(const std::vector<SolidPart>& parts, const SurfaceLibrary& library,
