@@ -14,6 +14,7 @@
 
 #include "sinew/core/error.hpp"
 #include "sinew/io/atomic_file.hpp"
+#include "sinew/scene/build_surface_mesh.hpp"
 
 namespace sinew::scene {
 namespace {
@@ -55,9 +56,10 @@ std::string executable_identity() {
   std::error_code ec;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (ec) return "unknown executable";
-  const auto size = std::filesystem::file_size(self, ec);
-  const auto time = std::filesystem::last_write_time(self, ec).time_since_epoch().count();
-  return fmt::format("{} {} {}", self.string(), ec ? 0 : size, ec ? 0 : static_cast<long long>(time));
+  std::error_code size_ec, time_ec;
+  const auto size = std::filesystem::file_size(self, size_ec);
+  const auto time = std::filesystem::last_write_time(self, time_ec).time_since_epoch().count();
+  return fmt::format("{} {} {}", self.string(), size_ec ? 0 : size, time_ec ? 0 : static_cast<long long>(time));
 }
 
 template <class Matrix>
@@ -81,9 +83,7 @@ std::optional<std::string> mesh_cache_key(const MeshSourceConfig& mesh, const st
   if (mesh.surfaces) {
     key += fmt::format("element size {:a}\n", mesh.surfaces->options.element_size);
     for (const auto& [name, file] : mesh.surfaces->surfaces) {
-      std::filesystem::path path(file.file);
-      if (path.is_relative() && !data_directory.empty()) path = std::filesystem::path(data_directory) / path;
-      const auto fingerprint = file_fingerprint(path);
+      const auto fingerprint = file_fingerprint(surface_file_path(file, data_directory));
       if (!fingerprint) return std::nullopt;
       key += fmt::format("surface {} {}\n", name, *fingerprint);
     }
