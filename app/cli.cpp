@@ -36,12 +36,14 @@ struct SceneOverrides {
   double element_size = 0;
   double max_tets = 0;
   std::string data_directory;  ///< replaces the scene's data_dir when set
+  std::string mesh_cache;      ///< directory of the mesh cache; empty = none (docs/mesh-cache.md)
 };
 
 scene::SceneConfig with_overrides(scene::SceneConfig config, const SceneOverrides& overrides) {
   if (overrides.element_size > 0) scene::set_element_size(config, overrides.element_size);
   if (!overrides.data_directory.empty()) config.data_directory = overrides.data_directory;
   if (overrides.max_tets > 0) config.limits.max_tets = overrides.max_tets;
+  config.mesh_cache_directory = overrides.mesh_cache;
   return config;
 }
 
@@ -147,6 +149,10 @@ int run_commands(int argc, char** argv) {
   run->add_option("--element-size", overrides.element_size, element_size_help)->check(kFinitePositive);
   run->add_option("--max-tets", overrides.max_tets, max_tets_help)->check(kFinitePositive);
   run->add_option("--data-dir", overrides.data_directory, data_dir_help);
+  const std::string mesh_cache_help =
+      "directory of meshes generated before: a body whose mesh section, element size, surface files and sinew "
+      "executable match an entry is read from it instead of meshed again; new meshes are added (docs/mesh-cache.md)";
+  run->add_option("--mesh-cache", overrides.mesh_cache, mesh_cache_help);
   run->add_flag("--resume", run_options.resume,
                 "continue the run in the output directory from its checkpoint (same scene and options; after an "
                 "interrupt, a kill or a crash)");
@@ -157,6 +163,7 @@ int run_commands(int argc, char** argv) {
   validate->add_option("--element-size", overrides.element_size, element_size_help)->check(kFinitePositive);
   validate->add_option("--max-tets", overrides.max_tets, max_tets_help)->check(kFinitePositive);
   validate->add_option("--data-dir", overrides.data_directory, data_dir_help);
+  validate->add_option("--mesh-cache", overrides.mesh_cache, mesh_cache_help);
 
   auto* schema = cli.add_subcommand("schema", "print the scene format");
   bool markdown = false, json = false;

@@ -74,6 +74,11 @@ std::vector<Index> referenced_nodes(const Tets& tets);
 /// `what` names the mesh in messages (e.g. the file name or body name).
 struct ValidationOptions {
   double rel_volume_tolerance = 1e-12;
+  /// Check the boundary for edges not joining exactly two boundary triangles and for pinched
+  /// nodes (faces shared by more than two tets are always refused). The surface mesher (CGAL
+  /// Mesh_3) may leave such an edge where regions meet, which the solver handles: its meshes are
+  /// not held to this when read back from the mesh cache.
+  bool check_boundary_manifold = true;
 };
 void validate(const TetMesh& mesh, const std::string& what, const ValidationOptions& options = {});
 

@@ -207,7 +207,7 @@ struct DisjointSets {
   void unite(Index a, Index b) { parent[find(a)] = find(b); }
 };
 
-void check_manifold(const TetMesh& mesh, Problems& problems) {
+void check_manifold(const TetMesh& mesh, const ValidationOptions& options, Problems& problems) {
   // Faces shared by more than two tets.
   const KeyGroups faces = group_tet_faces(mesh.tets, mesh.num_nodes());
   Offenders crowded_faces;
@@ -231,6 +231,7 @@ void check_manifold(const TetMesh& mesh, Problems& problems) {
                  " (non-manifold)");
     return;
   }
+  if (!options.check_boundary_manifold) return;
 
   // Boundary edges must each join exactly two boundary triangles.
   const Triangles boundary = faces_as_triangles(mesh.tets, boundary_face_ids(faces));
@@ -315,7 +316,7 @@ void validate(const TetMesh& mesh, const std::string& what, const ValidationOpti
   check_volumes(mesh, options, problems);
   check_duplicates(mesh, problems);
   problems.throw_if_any();
-  check_manifold(mesh, problems);
+  check_manifold(mesh, options, problems);
   problems.throw_if_any();
 }
 

@@ -8,13 +8,16 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 
 #include "sinew/core/error.hpp"
+#include "sinew/core/log.hpp"
 #include "sinew/material/material_spec.hpp"
 #include "sinew/mesh/generate.hpp"
 #include "sinew/mesh/read_msh.hpp"
 #include "sinew/scene/build_surface_mesh.hpp"
+#include "sinew/scene/mesh_cache.hpp"
 #include "sinew/scene/resource_estimate.hpp"
 #include "sinew/scene/schema.hpp"
 
@@ -155,20 +158,43 @@ class ProblemBuilder {
     for (std::size_t i = 0; i < force.nodes.size(); ++i) force.shares[i] = area_of_entry[i] / area;
   }
 
+  /// The body's mesh made from shapes or surfaces, through the mesh cache when there is one.
+  mesh::TetMesh generated_mesh(const BodyConfig& config) const {
+    const std::string& data_directory = scene_.data_directory.empty() ? scene_.base_directory : scene_.data_directory;
+    const auto make = [&] {
+      if (!config.mesh.surfaces) return mesh::generate_mesh(config.mesh.parts, config.mesh.generate);
+      SurfaceMeshConfig surfaces = *config.mesh.surfaces;
+      surfaces.options.what = "body \"" + config.name + "\"";
+      surfaces.options.max_tets = scene_.limits.max_tets;
+      return build_surface_mesh(surfaces, data_directory);
+    };
+    if (scene_.mesh_cache_directory.empty()) return make();
+    const std::optional<std::string> key = mesh_cache_key(config.mesh, data_directory);
+    if (!key) return make();  // a surface file is unreadable: the mesher says which
+    const std::string file = mesh_cache_file(scene_.mesh_cache_directory, *key);
+    std::string problem;
+    if (std::optional<mesh::TetMesh> cached = read_cached_mesh(file, *key, problem)) {
+      logger().info("body \"{}\": mesh from the cache, {} ({} nodes, {} tets)", config.name, file, cached->num_nodes(),
+                    cached->num_tets());
+      return std::move(*cached);
+    }
+    if (!problem.empty()) logger().warn("body \"{}\": mesh cache entry {} not used: {}; meshing anew", config.name, file, problem);
+    mesh::TetMesh made = make();
+    try {
+      write_cached_mesh(file, *key, made);
+      logger().info("body \"{}\": mesh stored in the cache, {}", config.name, file);
+    } catch (const OutputError& e) {
+      logger().warn("body \"{}\": the mesh cache was not written: {}", config.name, e.what());
+    }
+    return made;
+  }
+
   PlacedBody place_body(std::size_t b) {
     const BodyConfig& config = scene_.bodies[b];
     const std::string path = body_path(b);
     PlacedBody body;
     try {
-      if (config.mesh.surfaces) {
-        SurfaceMeshConfig surfaces = *config.mesh.surfaces;
-        surfaces.options.what = "body \"" + config.name + "\"";
-        surfaces.options.max_tets = scene_.limits.max_tets;
-        body.mesh = build_surface_mesh(surfaces, scene_.data_directory.empty() ? scene_.base_directory : scene_.data_directory);
-      } else {
-        body.mesh = config.mesh.file.empty() ? mesh::generate_mesh(config.mesh.parts, config.mesh.generate)
-                                             : mesh::read_msh(config.mesh.file);
-      }
+      body.mesh = config.mesh.file.empty() ? generated_mesh(config) : mesh::read_msh(config.mesh.file);
     } catch (const InputError& e) {
       error(json_path_key(path, "mesh"), e.what());
       return body;

@@ -13,6 +13,12 @@
 
 namespace sinew::scene {
 
+std::string surface_file_path(const SurfaceFileConfig& file, const std::string& directory) {
+  std::filesystem::path path(file.file);
+  if (path.is_relative() && !directory.empty()) path = std::filesystem::path(directory) / path;
+  return path.string();
+}
+
 namespace {
 
 std::string describe(const std::string& name, const SurfaceFileConfig& file) {
@@ -23,8 +29,7 @@ std::string describe(const std::string& name, const SurfaceFileConfig& file) {
 
 surface::ClosedSurface load_surface(const std::string& name, const SurfaceFileConfig& file, const std::string& directory) {
   const std::string what = describe(name, file);
-  std::filesystem::path path(file.file);
-  if (path.is_relative() && !directory.empty()) path = std::filesystem::path(directory) / path;
+  const std::filesystem::path path(surface_file_path(file, directory));
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
     std::string message = what + ": file not found: " + path.lexically_normal().string();

@@ -9,6 +9,9 @@
 
 namespace sinew::scene {
 
+/// Where a surface file is: `file.file` as is when absolute, else under `directory` (when set).
+std::string surface_file_path(const SurfaceFileConfig& file, const std::string& directory);
+
 /// Reads every surface of `config` from `directory` (relative file names resolve there),
 /// repairs the ones with a "repair" entry, checks that each is a closed, self-intersection-free
 /// 2-manifold, and meshes the parts. Logs what repair changed and the mesh's size, quality and

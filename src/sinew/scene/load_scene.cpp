@@ -204,8 +204,10 @@ class SceneReader {
       }
     } else if (source.contains("surfaces")) {
       mesh.surfaces = read_surface_mesh(source.at("surfaces"), json_path_key(mesh_path, "surfaces"), errors);
+      mesh.cache_key = source.at("surfaces").dump();
     } else {
       const json& generate = source.at("generate");
+      mesh.cache_key = generate.dump();
       const std::string generate_path = json_path_key(mesh_path, "generate");
       mesh.generate.element_size = generate.at("element_size").get<double>();
       mesh.generate.optimize_passes = generate.at("optimize_passes").get<int>();

@@ -46,6 +46,10 @@ struct MeshSourceConfig {
   Vector3 translate = Vector3::Zero();  ///< applied after rotate
   Vector3 rotate_axis = Vector3::UnitZ();
   double rotate_angle = 0;              ///< radians, about rotate_axis through the origin
+  /// The completed JSON of the `generate` or `surfaces` section (keys sorted): what, with the
+  /// element size in force and the surface files' bytes, identifies a generated mesh in the
+  /// mesh cache (mesh_cache.hpp). Empty for a mesh file.
+  std::string cache_key;
 };
 
 /// What a region of a body is made of.
@@ -232,6 +236,9 @@ struct SceneConfig {
   DynamicsConfig dynamics;
   OutputConfig output;
   ResourceLimits limits;  ///< set by the command line, not the scene file
+  /// Directory of the mesh cache (mesh_cache.hpp, docs/mesh-cache.md); empty = no cache. Set by
+  /// the command line, not the scene file.
+  std::string mesh_cache_directory;
 };
 
 }  // namespace sinew::scene
