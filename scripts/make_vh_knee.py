@@ -3,7 +3,8 @@
 section 6) on the Visible Human Male's right knee and skin (HRA 3D Reference Object Library v1.1,
 docs/vh-knee.md), meshed by sinew from the surfaces.
 
-Usage: /usr/bin/python3 scripts/make_vh_knee.py [--element-size H] [--increments N] [--angle DEG] [--out PATH]
+Usage: /usr/bin/python3 scripts/make_vh_knee.py [--element-size H] [--increments N] [--angle DEG]
+                                                [--muscle-law LAW] [--out PATH]
 
 The scene works in the data's own frame, in mm (the files are in metres: unit_scale 1000): +y up,
 +z anterior, +x to the subject's left (medial for this right leg). Stresses in kPa (Table 2 read
@@ -21,12 +22,15 @@ Bodies:
     tendon    quadriceps tendon, then the graded tissues of Table 2 (graded_2, graded_1): rods
     graded_2  up the front of the femur from the patella's base
     graded_1
-    muscle    everything inside the skin-fat layer not taken above: the quadriceps, vasti and
-              hamstrings of the thigh and the muscles of the shank (the data has none)
+    muscle    the thigh inside the skin-fat layer from 75 mm above the joint line up, not taken
+              above: the quadriceps, vasti and hamstrings (the data has none). Mooney-Rivlin by
+              default, Table 2's Veronda-Westmann with --muscle-law veronda-westmann (MUSCLE_LAWS)
     skin      skin-fat: the skin cropped 200 mm above and below the joint line, a layer
-              SKIN_FAT mm thick (Mooney-Rivlin 5 / 1 / 50 kPa)
-  Every soft part keeps GAP mm from the femur, which it slides on (contact); the bonded parts
-  have no gaps, so the leg has no voids. The thigh's cut moves only in its plane.
+              SKIN_FAT mm thick (Mooney-Rivlin 5 / 1 / 50 kPa); below the muscle it fills the
+              leg's inside, the shank's muscles included
+  Every soft part keeps GAP mm from the femur, which it slides on (contact); the soft tissue
+  slides on the quadriceps tendon, the patella and the ligament across SLIDE mm. Elsewhere the
+  bonded parts have no gaps, so the leg has no voids. The thigh's cut moves only in its plane.
 Left out: the menisci and the articular cartilage (docs/vh-knee.md says why).
 """
 import argparse
@@ -38,8 +42,10 @@ CROP = 200.0              # the leg is kept this far above and below it (mm)
 SKIN_FAT = 8.0            # the skin-fat layer's thickness (mm)
 GAP = 2.0                 # the soft tissue's distance from the femur (mm)
 CARTILAGE = 3.0           # the patella's articular cartilage, rigid with it (mm)
+MUSCLE_BASE_Y = JOINT_Y + 75.0  # below this the leg is skin-fat, not muscle (mm)
+SLIDE = 3.0               # the gap across which the soft tissue slides on the tendons and the patella (mm)
 PF_CAVITY = 14.0          # reach of the patellofemoral joint space (mm)
-TF_CAVITY = 10.0          # reach of the tibiofemoral joint space (mm)
+TF_CAVITY = 16.0          # reach of the tibiofemoral joint space (mm)
 FEMUR_PENALTY = 8000.0    # contact penalty femur / leg (kPa per mm of depth)
 LEG_PENALTY = 300.0       # contact penalty of the leg on itself
 STIFF_SCALE = 5.0         # penalty factor of the bones and tendons
@@ -52,6 +58,19 @@ KNEE_SOURCE = ("HRA 3D Reference Object Library v1.1, 'VH_M_Knee_R.glb' (3D Refe
                "Right; https://doi.org/10.48539/HBM546.WMLL.993, https://humanatlas.io/3d-reference-library)")
 SKIN_SOURCE = ("HRA 3D Reference Object Library v1.1, 'VH_M_Skin.glb' (3D Reference Organ for Skin, Male; "
                "HuBMAP ID HBM592.CTHB.237, https://humanatlas.io/3d-reference-library)")
+
+
+# The muscle's law. Table 2 gives Veronda-Westmann (alpha 7 kPa, beta 8) with the quadriceps' fibers;
+# the paper's pictures were made with Mooney-Rivlin only (paper section 6), and the dissertation
+# (section 9.2.1) says Veronda-Westmann with a large beta needs a full dynamic simulation. Run
+# quasi-statically on this leg, Table 2's muscle stops the knee near 100 degrees and Mooney-Rivlin
+# reaches 137 (docs/vh-knee.md), so Mooney-Rivlin is the default. The tendon and the graded tissues
+# keep Table 2's laws either way.
+MUSCLE_LAWS = {
+    "mooney-rivlin": {"law": "mooney-rivlin", "C1": 5.0, "C2": 1.0, "a": 50.0},
+    "veronda-westmann": {"law": "veronda-westmann", "alpha": 7.0, "beta": 8.0, "a": 100.0,
+                         "fiber": {"alpha": 5.0, "beta": 2.0, "direction": [0.0, 1.0, 0.0]}},
+}
 
 
 def surface(name):
@@ -103,7 +122,18 @@ def lerp(a, b, s):
     return [a[i] + s * (b[i] - a[i]) for i in range(3)]
 
 
-def scene(element_size, increments, angle_deg=150.0):
+def sliding_sleeve(base, t1):
+    """What the skin-fat slides on below MUSCLE_BASE_Y: the patella (with its cartilage), the
+    patellar ligament and the quadriceps tendon, each grown by SLIDE. Cut out of the skin-fat, this
+    leaves a SLIDE-wide gap, so the layer glides over them instead of being bonded (docs/vh-knee.md)."""
+    ligament = capsule(lerp(PATELLA_APEX, PATELLA_BASE, 0.15), lerp(TUBEROSITY, PATELLA_APEX, 0.05), 5.0 + SLIDE)
+    below_muscle = {"half_space": {"point": [0, MUSCLE_BASE_Y, 0], "normal": [0, 1, 0]}}
+    return {"union": [{"intersection": [below_muscle, {"union": [
+        {"offset": {"surfaces": ["patella"], "distance": CARTILAGE + SLIDE}}, ligament]}]},
+        capsule(base, t1, 7.0 + SLIDE)]}
+
+
+def scene(element_size, increments, angle_deg=150.0, muscle_law="mooney-rivlin"):
     h = element_size
     knee = {"file": "VH_M_Knee_R.glb", "unit_scale": 1000.0, "source": KNEE_SOURCE}
     surfaces = {
@@ -116,7 +146,7 @@ def scene(element_size, increments, angle_deg=150.0):
     axis = [MEDIAL_EPICONDYLE[i] - LATERAL_EPICONDYLE[i] for i in range(3)]
     # The quadriceps tendon and the graded tissues: rods up the front of the femur from the
     # patella's base (the femur's anterior surface is at z ~ 15 mm from y = -350 up).
-    base = [PATELLA_BASE[0], PATELLA_BASE[1] - 4, PATELLA_BASE[2] - 8]
+    base = [PATELLA_BASE[0], PATELLA_BASE[1] - 4, PATELLA_BASE[2] - 3]
     t1, t2, t3 = [-134.0, -320.0, 27.0], [-131.0, -300.0, 28.0], [-130.0, -280.0, 29.0]
     fiber_up = [0.0, 1.0, 0.0]
     ligament_dir = [PATELLA_APEX[i] - TUBEROSITY[i] for i in range(3)]
@@ -134,17 +164,29 @@ def scene(element_size, increments, angle_deg=150.0):
         {"region": "tendon", "solid": inside_leg(capsule(base, t1, 7.0))},
         {"region": "graded_2", "solid": inside_leg(capsule(t1, t2, 9.0))},
         {"region": "graded_1", "solid": inside_leg(capsule(t2, t3, 11.0))},
-        {"region": "muscle", "solid": inside_leg({"offset": {"surfaces": ["skin"], "distance": -SKIN_FAT}}, pouch=True)},
-        {"region": "skin", "solid": inside_leg(surface("skin"), pouch=True)},
+        # The muscle stops MUSCLE_BASE_Y above the joint line and keeps SLIDE from the tendon, on
+        # which it slides; the skin-fat fills the rest of the layer's inside and slides on the
+        # patella, the ligament and the tendon (sliding_sleeve).
+        {"region": "muscle", "solid": {"difference": [inside_leg({"intersection": [
+            {"offset": {"surfaces": ["skin"], "distance": -SKIN_FAT}},
+            {"half_space": {"point": [0, MUSCLE_BASE_Y, 0], "normal": [0, -1, 0]}}]}, pouch=True),
+            capsule(base, t1, 7.0 + SLIDE)]}},
+        {"region": "skin", "solid": {"difference": [inside_leg(surface("skin"), pouch=True), sliding_sleeve(base, t1)]}},
     ]
     fine = {"surfaces": ["patella", "femur"], "size": round(0.4 * h, 3), "grading": 0.3}
+    # Finer elements where the flexing knee crushes tissue most: along the whole quadriceps tendon
+    # into graded_2 (it wraps the trochlea), and across the back of the knee at the joint line
+    # (the popliteal fold). Capsules, since neither place has a surface of the data.
+    tendon_zone = {"capsule": {"a": base, "b": t2, "radius": 12.0}, "size": round(0.16 * h, 3), "grading": 0.3}
+    popliteal_zone = {"capsule": {"a": [-185.0, JOINT_Y - 10, -48.0], "b": [-110.0, JOINT_Y - 10, -48.0], "radius": 18.0},
+                      "size": round(0.25 * h, 3), "grading": 0.3}
     return {
         "name": "vh-knee-flexion",
         "description": "The seed's knee flexion on the Visible Human Male's right knee and skin (HRA 3D reference organs), "
                        "meshed from the surfaces (scripts/make_vh_knee.py, docs/vh-knee.md): rigid femur fixed, rigid "
                        "tibia and fibula turned 150 degrees about the epicondylar axis in 3-degree increments, rigid "
-                       "patella free, held by the patellar ligament and the quadriceps tendon; Table 2's graded tissues "
-                       "and muscle; skin-fat bonded to the tibia and the muscle. Frictionless material-depth contact "
+                       "patella free, held by the patellar ligament and the quadriceps tendon; Table 2's graded tissues; "
+                       f"the thigh's muscle in {muscle_law}; skin-fat bonded to the tibia and the muscle. Frictionless material-depth contact "
                        "between every pair of parts and self-contact of the skin.",
         "units": "mm, mN, kPa",
         "data_dir": "../../shared/data/vh-knee",
@@ -155,8 +197,7 @@ def scene(element_size, increments, angle_deg=150.0):
                          "fiber": {"alpha": 150.0, "beta": 2.0, "direction": fiber_up}},
             "graded_1": {"law": "veronda-westmann", "alpha": 14.0, "beta": 8.0, "a": 200.0,
                          "fiber": {"alpha": 20.0, "beta": 2.0, "direction": fiber_up}},
-            "muscle": {"law": "veronda-westmann", "alpha": 7.0, "beta": 8.0, "a": 100.0,
-                       "fiber": {"alpha": 5.0, "beta": 2.0, "direction": fiber_up}},
+            "muscle": MUSCLE_LAWS[muscle_law],
             "skin": {"law": "mooney-rivlin", "C1": 5.0, "C2": 1.0, "a": 50.0},
         },
         "bodies": [
@@ -169,7 +210,7 @@ def scene(element_size, increments, angle_deg=150.0):
              "contact": {"exclude_faces": [cut_plane(JOINT_Y + CROP, h)]}},
             {"name": "leg",
              "mesh": {"surfaces": {"element_size": h, "facet_distance": round(h / 30, 4), "surfaces": surfaces,
-                                   "parts": leg_parts, "size_zones": [fine]}},
+                                   "parts": leg_parts, "size_zones": [fine, tendon_zone, popliteal_zone]}},
              "regions": {
                  "tibia": {"rigid": {"prescribed": {"rotation": {"axis": axis, "point": LATERAL_EPICONDYLE, "angle_deg": angle_deg}}},
                            "contact_penalty_scale": STIFF_SCALE},
@@ -178,7 +219,7 @@ def scene(element_size, increments, angle_deg=150.0):
                  "tendon": {"material": "tendon", "fiber_path": quadriceps_path, "contact_penalty_scale": STIFF_SCALE},
                  "graded_2": {"material": "graded_2", "fiber_path": quadriceps_path},
                  "graded_1": {"material": "graded_1", "fiber_path": quadriceps_path},
-                 "muscle": {"material": "muscle", "fiber_path": leg_axis_path},
+                 "muscle": dict({"material": "muscle"}, **({"fiber_path": leg_axis_path} if "fiber" in MUSCLE_LAWS[muscle_law] else {})),
                  "skin": {"material": "skin"}},
              "contact": {"exclude_faces": [cut_plane(JOINT_Y + CROP, h), cut_plane(JOINT_Y - CROP, h)]}},
         ],
@@ -196,12 +237,15 @@ def scene(element_size, increments, angle_deg=150.0):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--element-size", type=float, default=18.0)
+    parser.add_argument("--element-size", type=float, default=22.0,
+                        help="mm; 22 gives about the seed's size (11.6k nodes, 46k tets)")
+    parser.add_argument("--muscle-law", choices=sorted(MUSCLE_LAWS), default="mooney-rivlin",
+                        help="the muscle's law: mooney-rivlin (the paper's pictures) or Table 2's veronda-westmann")
     parser.add_argument("--increments", type=int, default=50)
     parser.add_argument("--angle", type=float, default=150.0, help="final knee flexion (degrees)")
     parser.add_argument("--out", default=str(pathlib.Path(__file__).resolve().parent.parent / "examples" / "vh-knee-flexion.json"))
     args = parser.parse_args()
-    pathlib.Path(args.out).write_text(json.dumps(scene(args.element_size, args.increments, args.angle), indent=1) + "\n")
+    pathlib.Path(args.out).write_text(json.dumps(scene(args.element_size, args.increments, args.angle, args.muscle_law), indent=1) + "\n")
 
 
 if __name__ == "__main__":

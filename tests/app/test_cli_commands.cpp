@@ -37,7 +37,7 @@ TEST(Cli, ValidateAcceptsEveryExample) {
       std::printf("[ skipped  ] %s: meshing the VH surfaces instrumented takes minutes\n", entry.path().c_str());
       continue;
 #endif
-      arguments.insert(arguments.end(), {"--element-size", "30"});  // meshing at the scene's 14 mm takes a minute
+      arguments.insert(arguments.end(), {"--element-size", "30"});  // meshing at the scene's 22 mm takes a minute and a half
     }
     const CommandResult result = run_sinew(arguments, directory);
     EXPECT_EQ(result.exit_code, 0) << entry.path() << "\n" << result.err;
