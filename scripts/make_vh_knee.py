@@ -164,7 +164,7 @@ def scene(element_size, increments, angle_deg=150.0, muscle_law="mooney-rivlin")
         {"region": "tendon", "solid": inside_leg(capsule(base, t1, 7.0))},
         {"region": "graded_2", "solid": inside_leg(capsule(t1, t2, 9.0))},
         {"region": "graded_1", "solid": inside_leg(capsule(t2, t3, 11.0))},
-        # The muscle stops MUSCLE_BASE_Y above the joint line and keeps SLIDE from the tendon, on
+        # The muscle stops at MUSCLE_BASE_Y (75 mm above the joint line) and keeps SLIDE from the tendon, on
         # which it slides; the skin-fat fills the rest of the layer's inside and slides on the
         # patella, the ligament and the tendon (sliding_sleeve).
         {"region": "muscle", "solid": {"difference": [inside_leg({"intersection": [
