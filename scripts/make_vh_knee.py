@@ -4,7 +4,8 @@ section 6) on the Visible Human Male's right knee and skin (HRA 3D Reference Obj
 docs/vh-knee.md), meshed by sinew from the surfaces.
 
 Usage: /usr/bin/python3 scripts/make_vh_knee.py [--element-size H] [--increments N] [--angle DEG]
-                                                [--muscle-law LAW] [--out PATH]
+                                                [--muscle-law LAW] [--penetration-tolerance MM]
+                                                [--tibiofemoral-space MM] [--tendon-gap-end round|flat] [--out PATH]
 
 The scene works in the data's own frame, in mm (the files are in metres: unit_scale 1000): +y up,
 +z anterior, +x to the subject's left (medial for this right leg). Stresses in kPa (Table 2 read
@@ -49,6 +50,7 @@ TF_CAVITY = 16.0          # reach of the tibiofemoral joint space (mm)
 FEMUR_PENALTY = 8000.0    # contact penalty femur / leg (kPa per mm of depth)
 LEG_PENALTY = 300.0       # contact penalty of the leg on itself
 STIFF_SCALE = 5.0         # penalty factor of the bones and tendons
+PENETRATION_TOLERANCE = 0.8  # adaptive penalty: a pair's penalty grows while it penetrates more (mm; 10 % of SKIN_FAT)
 LATERAL_EPICONDYLE = [-172.85, -385.48, -25.22]  # centroid of VH_M_lateral_epicondylar_enthesis_R
 MEDIAL_EPICONDYLE = [-87.83, -393.84, -26.16]    # centroid of VH_M_medial_epicondylar_enthesis_R
 PATELLA_APEX = [-150.65, -406.23, 41.35]         # lowest vertex of VH_M_patella_R
@@ -81,7 +83,7 @@ def capsule(a, b, radius):
     return {"capsule": {"a": a, "b": b, "radius": radius}}
 
 
-def inside_leg(solid, pouch=False):
+def inside_leg(solid, tibiofemoral_space, pouch=False):
     """The solid, cropped to the leg between the cuts, kept GAP away from the femur and out of the
     joint spaces (and of the suprapatellar pouch, for the tissue around the quadriceps tendon)."""
     crop = [{"half_space": {"point": [0, JOINT_Y + CROP, 0], "normal": [0, 1, 0]}},
@@ -90,7 +92,7 @@ def inside_leg(solid, pouch=False):
             surface("skin")]
     # Cheap tests first: a point fails the crop before the costly distance queries are made.
     return {"difference": [{"intersection": crop + [solid]}, {"offset": {"surfaces": ["femur"], "distance": GAP}},
-                           joint_cavity("patella", PF_CAVITY), joint_cavity("tibia", TF_CAVITY)]
+                           joint_cavity("patella", PF_CAVITY), joint_cavity("tibia", tibiofemoral_space)]
             + ([SUPRAPATELLAR_POUCH] if pouch else [])}
 
 
@@ -122,7 +124,19 @@ def lerp(a, b, s):
     return [a[i] + s * (b[i] - a[i]) for i in range(3)]
 
 
-def sliding_sleeve(base, t1):
+def tendon_gap(base, t1, gap_end):
+    """The quadriceps tendon's rod grown by SLIDE, across which the muscle and the skin-fat slide.
+    gap_end "round" ends it at the tendon's top (t1) with the rod's hemisphere; "flat" with a plane
+    normal to the tendon there, which leaves no thin wedge of muscle bonded to graded_2 inside the
+    gap's mouth (docs/vh-knee.md compares the two)."""
+    rod = capsule(base, t1, 7.0 + SLIDE)
+    if gap_end == "round":
+        return rod
+    axis = [t1[i] - base[i] for i in range(3)]
+    return {"intersection": [rod, {"half_space": {"point": t1, "normal": axis}}]}
+
+
+def sliding_sleeve(base, t1, gap_end):
     """What the skin-fat slides on below MUSCLE_BASE_Y: the patella (with its cartilage), the
     patellar ligament and the quadriceps tendon, each grown by SLIDE. Cut out of the skin-fat, this
     leaves a SLIDE-wide gap, so the layer glides over them instead of being bonded (docs/vh-knee.md)."""
@@ -130,11 +144,16 @@ def sliding_sleeve(base, t1):
     below_muscle = {"half_space": {"point": [0, MUSCLE_BASE_Y, 0], "normal": [0, 1, 0]}}
     return {"union": [{"intersection": [below_muscle, {"union": [
         {"offset": {"surfaces": ["patella"], "distance": CARTILAGE + SLIDE}}, ligament]}]},
-        capsule(base, t1, 7.0 + SLIDE)]}
+        tendon_gap(base, t1, gap_end)]}
 
 
-def scene(element_size, increments, angle_deg=150.0, muscle_law="mooney-rivlin"):
+def scene(element_size, increments, angle_deg=150.0, muscle_law="mooney-rivlin", penetration_tolerance=PENETRATION_TOLERANCE,
+          tibiofemoral_space=TF_CAVITY, gap_end="round"):
     h = element_size
+
+    def inside(solid, pouch=False):
+        return inside_leg(solid, tibiofemoral_space, pouch)
+
     knee = {"file": "VH_M_Knee_R.glb", "unit_scale": 1000.0, "source": KNEE_SOURCE}
     surfaces = {
         "femur": dict(knee, mesh="VH_M_femur_R", repair={"fill_holes": True}),
@@ -160,18 +179,18 @@ def scene(element_size, increments, angle_deg=150.0, muscle_law="mooney-rivlin")
             {"union": [surface("tibia"), surface("fibula")]},
             {"half_space": {"point": [0, JOINT_Y - CROP, 0], "normal": [0, -1, 0]}}]}},
         {"region": "patella", "solid": {"offset": {"surfaces": ["patella"], "distance": CARTILAGE}}},
-        {"region": "ligament", "solid": inside_leg(capsule(lerp(PATELLA_APEX, PATELLA_BASE, 0.15), lerp(TUBEROSITY, PATELLA_APEX, 0.05), 5.0))},
-        {"region": "tendon", "solid": inside_leg(capsule(base, t1, 7.0))},
-        {"region": "graded_2", "solid": inside_leg(capsule(t1, t2, 9.0))},
-        {"region": "graded_1", "solid": inside_leg(capsule(t2, t3, 11.0))},
+        {"region": "ligament", "solid": inside(capsule(lerp(PATELLA_APEX, PATELLA_BASE, 0.15), lerp(TUBEROSITY, PATELLA_APEX, 0.05), 5.0))},
+        {"region": "tendon", "solid": inside(capsule(base, t1, 7.0))},
+        {"region": "graded_2", "solid": inside(capsule(t1, t2, 9.0))},
+        {"region": "graded_1", "solid": inside(capsule(t2, t3, 11.0))},
         # The muscle stops at MUSCLE_BASE_Y (75 mm above the joint line) and keeps SLIDE from the tendon, on
         # which it slides; the skin-fat fills the rest of the layer's inside and slides on the
         # patella, the ligament and the tendon (sliding_sleeve).
-        {"region": "muscle", "solid": {"difference": [inside_leg({"intersection": [
+        {"region": "muscle", "solid": {"difference": [inside({"intersection": [
             {"offset": {"surfaces": ["skin"], "distance": -SKIN_FAT}},
             {"half_space": {"point": [0, MUSCLE_BASE_Y, 0], "normal": [0, -1, 0]}}]}, pouch=True),
-            capsule(base, t1, 7.0 + SLIDE)]}},
-        {"region": "skin", "solid": {"difference": [inside_leg(surface("skin"), pouch=True), sliding_sleeve(base, t1)]}},
+            tendon_gap(base, t1, gap_end)]}},
+        {"region": "skin", "solid": {"difference": [inside(surface("skin"), pouch=True), sliding_sleeve(base, t1, gap_end)]}},
     ]
     fine = {"surfaces": ["patella", "femur"], "size": round(0.4 * h, 3), "grading": 0.3}
     # Finer elements where the flexing knee crushes tissue most: along the whole quadriceps tendon
@@ -227,9 +246,13 @@ def scene(element_size, increments, angle_deg=150.0, muscle_law="mooney-rivlin")
             {"name": "thigh_cut", "type": "planar", "normal": [0, 1, 0],
              "nodes": {"body": "leg", "plane": {"point": [0, JOINT_Y + CROP, 0], "normal": [0, 1, 0], "tolerance": round(h / 10, 3)}}},
         ],
-        "contact": {"self_contact": True, "pairs": [
+        # The penalties above hold the leg's penetration into itself under 10 % of the skin-fat layer up to
+        # about 70 degrees; beyond, the calf pressed into the thigh needs stiffer ones, which the adaptive
+        # penalty supplies step by step (docs/vh-knee.md). A tolerance of 0 keeps the plain penalties.
+        "contact": dict({"self_contact": True}, **({"enforcement": {
+            "method": "adaptive-penalty", "penetration_tolerance": penetration_tolerance}} if penetration_tolerance > 0 else {}), pairs=[
             {"bodies": ["femur", "leg"], "penalty": FEMUR_PENALTY},
-            {"bodies": ["leg", "leg"], "penalty": LEG_PENALTY}]},
+            {"bodies": ["leg", "leg"], "penalty": LEG_PENALTY}]),
         "solver": {"increments": increments},
         "output": {"vtu": True},
     }
@@ -241,11 +264,19 @@ def main():
                         help="mm; 22 gives about the seed's size (11.6k nodes, 46k tets)")
     parser.add_argument("--muscle-law", choices=sorted(MUSCLE_LAWS), default="mooney-rivlin",
                         help="the muscle's law: mooney-rivlin (the paper's pictures) or Table 2's veronda-westmann")
+    parser.add_argument("--penetration-tolerance", type=float, default=PENETRATION_TOLERANCE,
+                        help="mm; the adaptive penalty grows a pair's penalty while it penetrates deeper (0: plain penalties)")
+    parser.add_argument("--tibiofemoral-space", type=float, default=TF_CAVITY,
+                        help="mm; reach of the tibiofemoral joint space kept free of soft tissue")
+    parser.add_argument("--tendon-gap-end", choices=["round", "flat"], default="round",
+                        help="how the soft tissue's sliding gap round the quadriceps tendon ends at the tendon's top")
     parser.add_argument("--increments", type=int, default=50)
     parser.add_argument("--angle", type=float, default=150.0, help="final knee flexion (degrees)")
     parser.add_argument("--out", default=str(pathlib.Path(__file__).resolve().parent.parent / "examples" / "vh-knee-flexion.json"))
     args = parser.parse_args()
-    pathlib.Path(args.out).write_text(json.dumps(scene(args.element_size, args.increments, args.angle, args.muscle_law), indent=1) + "\n")
+    pathlib.Path(args.out).write_text(json.dumps(scene(
+        args.element_size, args.increments, args.angle, args.muscle_law, args.penetration_tolerance,
+        args.tibiofemoral_space, args.tendon_gap_end), indent=1) + "\n")
 
 
 if __name__ == "__main__":
