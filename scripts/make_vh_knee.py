@@ -50,7 +50,7 @@ TF_CAVITY = 16.0          # reach of the tibiofemoral joint space (mm)
 FEMUR_PENALTY = 8000.0    # contact penalty femur / leg (kPa per mm of depth)
 LEG_PENALTY = 300.0       # contact penalty of the leg on itself
 STIFF_SCALE = 5.0         # penalty factor of the bones and tendons
-PENETRATION_TOLERANCE = 0.8  # adaptive penalty: a pair's penalty grows while it penetrates more (mm; 10 % of SKIN_FAT)
+PENETRATION_TOLERANCE = 0.6  # adaptive penalty: a pair's penalty grows while it penetrates deeper (mm; 0.8 overshot 10 % of SKIN_FAT)
 LATERAL_EPICONDYLE = [-172.85, -385.48, -25.22]  # centroid of VH_M_lateral_epicondylar_enthesis_R
 MEDIAL_EPICONDYLE = [-87.83, -393.84, -26.16]    # centroid of VH_M_medial_epicondylar_enthesis_R
 PATELLA_APEX = [-150.65, -406.23, 41.35]         # lowest vertex of VH_M_patella_R
@@ -246,9 +246,9 @@ def scene(element_size, increments, angle_deg=150.0, muscle_law="mooney-rivlin",
             {"name": "thigh_cut", "type": "planar", "normal": [0, 1, 0],
              "nodes": {"body": "leg", "plane": {"point": [0, JOINT_Y + CROP, 0], "normal": [0, 1, 0], "tolerance": round(h / 10, 3)}}},
         ],
-        # The penalties above hold the leg's penetration into itself under 10 % of the skin-fat layer up to
-        # about 70 degrees; beyond, the calf pressed into the thigh needs stiffer ones, which the adaptive
-        # penalty supplies step by step (docs/vh-knee.md). A tolerance of 0 keeps the plain penalties.
+        # The penalties above hold the penetration under PENETRATION_TOLERANCE up to about 75 degrees;
+        # beyond, the calf pressed into the thigh and the patella into the femur need stiffer ones, which
+        # the adaptive penalty supplies step by step (docs/vh-knee.md). A tolerance of 0 keeps the plain penalties.
         "contact": dict({"self_contact": True}, **({"enforcement": {
             "method": "adaptive-penalty", "penetration_tolerance": penetration_tolerance}} if penetration_tolerance > 0 else {}), pairs=[
             {"bodies": ["femur", "leg"], "penalty": FEMUR_PENALTY},
