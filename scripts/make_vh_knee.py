@@ -66,7 +66,7 @@ SKIN_SOURCE = ("HRA 3D Reference Object Library v1.1, 'VH_M_Skin.glb' (3D Refere
 # the paper's pictures were made with Mooney-Rivlin only (paper section 6), and the dissertation
 # (section 9.2.1) says Veronda-Westmann with a large beta needs a full dynamic simulation. Run
 # quasi-statically on this leg, Table 2's muscle stops the knee near 100 degrees and Mooney-Rivlin
-# reaches 137 (docs/vh-knee.md), so Mooney-Rivlin is the default. The tendon and the graded tissues
+# reaches 137 (both with plain penalties; docs/vh-knee.md), so Mooney-Rivlin is the default. The tendon and the graded tissues
 # keep Table 2's laws either way.
 MUSCLE_LAWS = {
     "mooney-rivlin": {"law": "mooney-rivlin", "C1": 5.0, "C2": 1.0, "a": 50.0},
@@ -199,6 +199,14 @@ def scene(element_size, increments, angle_deg=150.0, muscle_law="mooney-rivlin",
     tendon_zone = {"capsule": {"a": base, "b": t2, "radius": 12.0}, "size": round(0.16 * h, 3), "grading": 0.3}
     popliteal_zone = {"capsule": {"a": [-185.0, JOINT_Y - 10, -48.0], "b": [-110.0, JOINT_Y - 10, -48.0], "radius": 18.0},
                       "size": round(0.25 * h, 3), "grading": 0.3}
+    # The penalties hold the penetration under PENETRATION_TOLERANCE up to about 75 degrees; beyond,
+    # the calf pressed into the thigh and the patella into the femur need stiffer ones, which the
+    # adaptive penalty supplies step by step (docs/vh-knee.md). A tolerance of 0 keeps the plain penalties.
+    contact = {"self_contact": True}
+    if penetration_tolerance > 0:
+        contact["enforcement"] = {"method": "adaptive-penalty", "penetration_tolerance": penetration_tolerance}
+    contact["pairs"] = [{"bodies": ["femur", "leg"], "penalty": FEMUR_PENALTY},
+                        {"bodies": ["leg", "leg"], "penalty": LEG_PENALTY}]
     return {
         "name": "vh-knee-flexion",
         "description": "The seed's knee flexion on the Visible Human Male's right knee and skin (HRA 3D reference organs), "
@@ -246,13 +254,7 @@ def scene(element_size, increments, angle_deg=150.0, muscle_law="mooney-rivlin",
             {"name": "thigh_cut", "type": "planar", "normal": [0, 1, 0],
              "nodes": {"body": "leg", "plane": {"point": [0, JOINT_Y + CROP, 0], "normal": [0, 1, 0], "tolerance": round(h / 10, 3)}}},
         ],
-        # The penalties above hold the penetration under PENETRATION_TOLERANCE up to about 75 degrees;
-        # beyond, the calf pressed into the thigh and the patella into the femur need stiffer ones, which
-        # the adaptive penalty supplies step by step (docs/vh-knee.md). A tolerance of 0 keeps the plain penalties.
-        "contact": dict({"self_contact": True}, **({"enforcement": {
-            "method": "adaptive-penalty", "penetration_tolerance": penetration_tolerance}} if penetration_tolerance > 0 else {}), pairs=[
-            {"bodies": ["femur", "leg"], "penalty": FEMUR_PENALTY},
-            {"bodies": ["leg", "leg"], "penalty": LEG_PENALTY}]),
+        "contact": contact,
         "solver": {"increments": increments},
         "output": {"vtu": True},
     }
