@@ -303,7 +303,7 @@ void RunOutput::write_summary(const solver::StepperResult& result, double wall_s
 
 void RunOutput::write_stopped_summary(const std::string& scene_name, const std::string& status,
                                       const std::string& message, const std::string& reached_key, double reached,
-                                      double wall_seconds) {
+                                      double wall_seconds, const solver::PhaseTimes& times) {
   try {
     flush_tables();
   } catch (const Error&) {  // the summary below may still fit
@@ -314,7 +314,7 @@ void RunOutput::write_stopped_summary(const std::string& scene_name, const std::
   j["status"] = status;
   j["message"] = message;
   j[reached_key] = reached;
-  finish_summary(j, wall_seconds, {});
+  finish_summary(j, wall_seconds, times);
 }
 
 }  // namespace sinew::app

@@ -227,7 +227,9 @@ RunReport run_model(model::Model& model, const scene::OutputConfig& output_confi
   const char* reached_key = model.is_dynamic() ? "time_reached" : "lambda_reached";
   auto record_stop = [&](const char* status, const std::string& message) {
     try {
-      output.write_stopped_summary(model.name, status, message, reached_key, reached, seconds_since(start));
+      const model::RunSnapshot* last = checkpoints.latest();
+      output.write_stopped_summary(model.name, status, message, reached_key, reached, seconds_since(start),
+                                   last ? last->stepper.times : solver::PhaseTimes{});
     } catch (...) {  // the disk may still be full: the message on standard error remains
     }
   };

@@ -213,6 +213,11 @@ TEST(Stepper, AResumedRunGoesOnFromEverySnapshotExactlyAsTheUninterruptedOne) {
   ASSERT_EQ(snapshots.size(), 16u);
   EXPECT_TRUE(snapshots[3].segment_done);
   EXPECT_FALSE(snapshots[4].segment_done);
+  // Each snapshot carries the phase times so far: they grow and end at most at the run's.
+  EXPECT_GT(snapshots.front().times.forces_and_stiffness, 0);
+  for (std::size_t i = 1; i < snapshots.size(); ++i)
+    EXPECT_GE(snapshots[i].times.total(), snapshots[i - 1].times.total()) << i;
+  EXPECT_LE(snapshots.back().times.total(), full.times.total());
   for (std::size_t i = 0; i < snapshots.size(); ++i) {
     SCOPED_TRACE("resumed after step " + std::to_string(i + 1));
     st::SolverRig rig(st::uniaxial_problem(1.3, 0.5, 0.2, 1.5));

@@ -13,13 +13,17 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
   const PhaseTimes times_before = newton.times();
   const LinearCounts counts_before = newton.counts();
   StepperResult result;
+  auto times_so_far = [&] {
+    PhaseTimes times = newton.times();
+    times.forces_and_stiffness -= times_before.forces_and_stiffness;
+    times.linear_solve -= times_before.linear_solve;
+    times.line_search -= times_before.line_search;
+    times.other -= times_before.other;
+    times.collision = objective.collision_seconds() - collision_before;
+    return times;
+  };
   auto finish = [&](StepperResult& r) -> StepperResult& {
-    r.times = newton.times();
-    r.times.forces_and_stiffness -= times_before.forces_and_stiffness;
-    r.times.linear_solve -= times_before.linear_solve;
-    r.times.line_search -= times_before.line_search;
-    r.times.other -= times_before.other;
-    r.times.collision = objective.collision_seconds() - collision_before;
+    r.times = times_so_far();
     r.linear.factorizations = newton.counts().factorizations - counts_before.factorizations;
     r.linear.linear_iterations = newton.counts().linear_iterations - counts_before.linear_iterations;
     if (r.steps == 0) r.min_step = 0;
@@ -169,6 +173,7 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
           snapshot.counts = {result.segments_completed, result.steps, result.newton_iterations, result.cuts,
                              result.snap_throughs, result.refinements, result.min_step, result.max_step};
           snapshot.scheme = scheme.memory(current, newton);
+          snapshot.times = times_so_far();
           callbacks.on_accepted(snapshot);
         }
         continue;

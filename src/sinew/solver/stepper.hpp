@@ -62,6 +62,9 @@ struct StepperSnapshot {
   StepRecord record;           ///< the last accepted step
   StepCounts counts;
   SchemeMemory scheme;
+  /// Seconds spent per phase by this process's run_stepper so far (not written to checkpoints:
+  /// a stopped run's summary reports them up to its last accepted step).
+  PhaseTimes times;
 };
 
 struct StepperCallbacks {
