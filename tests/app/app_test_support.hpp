@@ -25,6 +25,9 @@
 namespace sinew::app_test {
 
 namespace fs = std::filesystem;
+
+/// The repository (examples/, scripts/).
+inline const fs::path kSource = SINEW_SOURCE_DIR;
 using nlohmann::json;
 
 using sinew::testing::read_text;

@@ -18,8 +18,6 @@ using ::testing::HasSubstr;
 using ::testing::Not;
 using ::testing::StartsWith;
 
-const fs::path kSource(SINEW_SOURCE_DIR);
-
 TEST(Cli, ValidateAcceptsEveryExample) {
   TempDir directory;
   int examples = 0;

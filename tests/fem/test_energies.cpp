@@ -7,10 +7,13 @@
 #include "sinew/fem/elastic_energy.hpp"
 #include "sinew/fem/external_force_energy.hpp"
 #include "support/fd_check.hpp"
+#include "support/flat_positions.hpp"
 #include "support/problem_builder.hpp"
 
 using namespace sinew;
 namespace st = sinew::testing;
+using st::flat;
+using st::unflat;
 
 namespace {
 
@@ -23,8 +26,6 @@ Positions perturbed(const Positions& X, double amount, unsigned seed) {
   return x;
 }
 
-VectorX flat(const Positions& x) { return Eigen::Map<const VectorX>(x.data(), x.size()); }
-Positions unflat(const VectorX& v) { return Eigen::Map<const Positions>(v.data(), v.size() / 3, 3); }
 
 material::MaterialPtr fibered_veronda() {
   material::MaterialSpec spec;

@@ -10,9 +10,11 @@
 #include "sinew/fem/external_force_energy.hpp"
 #include "sinew/fem/mass_matrix.hpp"
 #include "support/box_mesh.hpp"
+#include "support/flat_positions.hpp"
 
 using namespace sinew;
 namespace st = sinew::testing;
+using st::flat;
 using fem::MassKind;
 
 namespace {
@@ -51,8 +53,6 @@ MatrixX expand3(const Eigen::SparseMatrix<double>& M) {
     for (Index b = 0; b < D.cols(); ++b) full.block<3, 3>(3 * a, 3 * b) = D(a, b) * Matrix3::Identity();
   return full;
 }
-
-VectorX flat(const Positions& x) { return Eigen::Map<const VectorX>(x.data(), x.size()); }
 
 }  // namespace
 

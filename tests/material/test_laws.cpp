@@ -27,7 +27,7 @@ using sinew::testing::relative_error;
 using test_support::random_deformation;
 using test_support::random_rotation;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kInfiniteEnergy = std::numeric_limits<double>::infinity();
 
 struct LawCase {
   std::string label;
@@ -200,10 +200,10 @@ TEST_P(LawTest, NonPositiveDeterminantGivesInfinityAndLeavesOutputsAlone) {
     ASSERT_LE(F.determinant(), 0.0);
     Matrix3 stress = Matrix3::Constant(42.0);
     Matrix9 tangent = Matrix9::Constant(-7.0);
-    EXPECT_EQ(material_->evaluate(F, &stress, &tangent), kInf) << F;
+    EXPECT_EQ(material_->evaluate(F, &stress, &tangent), kInfiniteEnergy) << F;
     EXPECT_EQ(stress, Matrix3::Constant(42.0));
     EXPECT_EQ(tangent, Matrix9::Constant(-7.0));
-    EXPECT_EQ(psi(F), kInf);
+    EXPECT_EQ(psi(F), kInfiniteEnergy);
   }
 }
 

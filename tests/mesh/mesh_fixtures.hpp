@@ -11,6 +11,8 @@
 #include <set>
 #include <string>
 
+#include "sinew/core/error.hpp"
+#include "sinew/mesh/read_msh.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
 #include "support/box_mesh.hpp"
 #include "support/files.hpp"
@@ -105,6 +107,16 @@ inline bool is_closed_oriented_surface(const Triangles& triangles) {
     if (directed.count({a, b}) != 1 || directed.count({b, a}) != 1) return false;
   }
   return true;
+}
+
+/// The InputError message read_msh gives for `path`, or "no error".
+inline std::string read_msh_error(const std::string& path) {
+  try {
+    read_msh(path);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "no error";
 }
 
 }  // namespace sinew::mesh::testing

@@ -16,6 +16,7 @@ namespace {
 
 using ::testing::AllOf;
 using ::testing::HasSubstr;
+using testing::read_msh_error;
 using testing::write_text;
 namespace occ = gmsh::model::occ;
 
@@ -209,15 +210,6 @@ INSTANTIATE_TEST_SUITE_P(Formats, ReadMshFormat,
                                            MshFormat{"v41_ascii", 4.1, false},
                                            MshFormat{"v41_binary", 4.1, true}),
                          [](const auto& info) { return info.param.name; });
-
-std::string read_msh_error(const std::string& path) {
-  try {
-    read_msh(path);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
-}
 
 TEST(ReadMsh, HandWrittenV22WithSparseTagsInvertedTetAndUnusedNode) {
   const testing::TempDir directory("sinew-read-msh");

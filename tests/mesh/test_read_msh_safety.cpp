@@ -19,17 +19,9 @@ namespace {
 
 using ::testing::AllOf;
 using ::testing::HasSubstr;
+using testing::read_msh_error;
 using testing::write_text;
 using ::testing::Not;
-
-std::string read_msh_error(const std::string& path) {
-  try {
-    read_msh(path);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "no error";
-}
 
 /// A Gmsh script that creates `marker` when Gmsh runs it.
 std::string script_touching(const std::string& marker) {

@@ -45,7 +45,7 @@ json dynamic_scene() {
   return scene;
 }
 
-Model build(const json& scene) { return build_model(scene::parse_scene(scene, "")); }
+Model built_model(const json& scene) { return build_model(scene::parse_scene(scene, "")); }
 
 struct SolvedRun {
   solver::StepperResult result;
@@ -94,7 +94,7 @@ void expect_same(const RunSnapshot& a, const RunSnapshot& b) {
 }
 
 TEST(Checkpoint, AFileHoldsTheSnapshotExactly) {
-  Model model = build(static_scene());
+  Model model = built_model(static_scene());
   const SolvedRun run = solve(model);
   ASSERT_TRUE(run.result.success) << run.result.message;
   ASSERT_GE(run.snapshots.size(), 6u);
@@ -113,14 +113,14 @@ TEST(Checkpoint, AFileHoldsTheSnapshotExactly) {
 }
 
 TEST(Checkpoint, AStaticRunResumedFromAnyStepEndsWhereTheRunEnded) {
-  Model model = build(static_scene());
+  Model model = built_model(static_scene());
   const SolvedRun full = solve(model);
   ASSERT_TRUE(full.result.success) << full.result.message;
   // The adaptive penalty grew the pair's penalty: a resume must bring it back.
   EXPECT_GT(full.snapshots.back().contact_penalty.maxCoeff(), 0.0636);
   for (const std::size_t k : {std::size_t{0}, full.snapshots.size() / 2, full.snapshots.size() - 2}) {
     SCOPED_TRACE("resumed after step " + std::to_string(k + 1));
-    Model fresh = build(static_scene());
+    Model fresh = built_model(static_scene());
     const SolvedRun resumed = solve(fresh, &full.snapshots[k]);
     ASSERT_TRUE(resumed.result.success) << resumed.result.message;
     EXPECT_EQ(resumed.result.steps, full.result.steps);
@@ -132,13 +132,13 @@ TEST(Checkpoint, AStaticRunResumedFromAnyStepEndsWhereTheRunEnded) {
 }
 
 TEST(Checkpoint, AnImplicitDynamicRunResumedEndsWithTheSameStateAndVelocity) {
-  Model model = build(dynamic_scene());
+  Model model = built_model(dynamic_scene());
   const SolvedRun full = solve(model);
   ASSERT_TRUE(full.result.success) << full.result.message;
   ASSERT_GE(full.snapshots.size(), 10u);
   const RunSnapshot& middle = full.snapshots[full.snapshots.size() / 2];
   EXPECT_EQ(middle.stepper.scheme.velocity.rows(), model.problem->mesh.num_nodes());
-  Model fresh = build(dynamic_scene());
+  Model fresh = built_model(dynamic_scene());
   const SolvedRun resumed = solve(fresh, &middle);
   ASSERT_TRUE(resumed.result.success) << resumed.result.message;
   EXPECT_EQ(resumed.result.steps, full.result.steps);
@@ -148,14 +148,14 @@ TEST(Checkpoint, AnImplicitDynamicRunResumedEndsWithTheSameStateAndVelocity) {
 }
 
 TEST(Checkpoint, TheFingerprintTellsScenesAndMeshesApart) {
-  const Model a = build(static_scene());
-  const Model b = build(static_scene());
+  const Model a = built_model(static_scene());
+  const Model b = built_model(static_scene());
   EXPECT_EQ(model_fingerprint(a, "scene text"), model_fingerprint(b, "scene text"));
   EXPECT_NE(model_fingerprint(a, "scene text"), model_fingerprint(a, "scene text 2"));
   json finer = static_scene();
   finer["bodies"][0]["mesh"]["generate"]["element_size"] =
       0.8 * finer["bodies"][0]["mesh"]["generate"]["element_size"].get<double>();
-  EXPECT_NE(model_fingerprint(a, "scene text"), model_fingerprint(build(finer), "scene text"));
+  EXPECT_NE(model_fingerprint(a, "scene text"), model_fingerprint(built_model(finer), "scene text"));
 }
 
 std::string read_error(const std::string& path) {
@@ -187,7 +187,7 @@ TEST(Checkpoint, MissingForeignOldAndDamagedFilesAreRefusedByName) {
   EXPECT_THAT(read_error(path), HasSubstr("it is damaged (no \"stepper\")"));
 
   // A real checkpoint cut short, and one with a matrix of the wrong size.
-  Model model = build(static_scene());
+  Model model = built_model(static_scene());
   const SolvedRun run = solve(model);
   ASSERT_FALSE(run.snapshots.empty());
   write_checkpoint(path, checkpoint_of(run.snapshots.front()));
@@ -205,7 +205,7 @@ TEST(Checkpoint, MissingForeignOldAndDamagedFilesAreRefusedByName) {
 }
 
 TEST(Checkpoint, ASnapshotOfAnotherModelDoesNotFit) {
-  Model model = build(static_scene());
+  Model model = built_model(static_scene());
   const SolvedRun run = solve(model);
   ASSERT_FALSE(run.snapshots.empty());
   RunSnapshot snapshot = run.snapshots.front();
@@ -238,8 +238,8 @@ TEST(Checkpoint, ExplicitIntegrationCannotResume) {
   json scene = dynamic_scene();
   scene["dynamics"]["integrator"] = "explicit";
   scene["dynamics"]["end_time"] = 1e-4;
-  Model model = build(scene);
-  Model other = build(static_scene());
+  Model model = built_model(scene);
+  Model other = built_model(static_scene());
   const SolvedRun run = solve(other);
   ASSERT_FALSE(run.snapshots.empty());
   try {

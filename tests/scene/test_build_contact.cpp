@@ -28,7 +28,7 @@ using ::testing::HasSubstr;
 /// A soft box [0,1]^2 x [0,0.5] and a rigid plate below it.
 json contact_scene() { return sinew::testing::box_on_plate_scene(); }
 
-ContactSetup build(const json& scene_json) {
+ContactSetup contact_setup(const json& scene_json) {
   const SceneConfig scene = parse_scene(scene_json, "");
   const fem::Problem problem = build_problem(scene);
   return build_contact(scene, problem);
@@ -36,7 +36,7 @@ ContactSetup build(const json& scene_json) {
 
 std::string build_contact_error(const json& scene_json) {
   try {
-    build(scene_json);
+    contact_setup(scene_json);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -44,7 +44,7 @@ std::string build_contact_error(const json& scene_json) {
 }
 
 TEST(BuildContact, DepthIsTheRestDistanceToTheBoundaryAndPenaltyFollowsStiffnessAndSize) {
-  const ContactSetup setup = build(contact_scene());
+  const ContactSetup setup = contact_setup(contact_scene());
   const auto& g = setup.geometry;
   ASSERT_EQ(setup.body_names, (std::vector<std::string>{"box", "plate"}));
   const SceneConfig scene = parse_scene(contact_scene(), "");
@@ -70,11 +70,11 @@ TEST(BuildContact, PairsOverrideTheGlobalPenaltyAndCanSwitchContactOff) {
   json scene = contact_scene();
   scene["contact"] = json::parse(R"({"penalty": 7, "self_contact": false,
       "pairs": [{"bodies": ["plate", "box"], "penalty": 3}]})");
-  ContactSetup setup = build(scene);
+  ContactSetup setup = contact_setup(scene);
   EXPECT_EQ(setup.geometry.penalty(0, 1), 3.0);
   EXPECT_EQ(setup.geometry.penalty(0, 0), 0.0);
   scene["contact"] = json::parse(R"({"pairs": [{"bodies": ["box", "plate"], "enabled": false}]})");
-  setup = build(scene);
+  setup = contact_setup(scene);
   EXPECT_EQ(setup.geometry.penalty(0, 1), 0.0);
 }
 
@@ -82,7 +82,7 @@ TEST(BuildContact, PairsOverrideTheGlobalPenaltyAndCanSwitchContactOff) {
 // one are refused with the ratio, the automatic value and what to do.
 TEST(BuildContact, APenaltyFarAboveTheAutomaticOneIsRefused) {
   json scene = contact_scene();
-  const ContactSetup automatic = build(scene);
+  const ContactSetup automatic = contact_setup(scene);
   const double allowed = automatic.geometry.penalty(0, 1) * kMaxPenaltyOverAutomatic;
   scene["contact"] = {{"penalty", 0.5 * allowed}};
   EXPECT_EQ(build_contact_error(scene), "no error");
@@ -99,7 +99,7 @@ TEST(BuildContact, APenaltyFarAboveTheAutomaticOneIsRefused) {
 
 TEST(BuildContact, RegionPenaltyScalesReachTheirTetsAndSurfaceTriangles) {
   // Without a scale anywhere the arrays stay empty (every factor 1).
-  const ContactSetup plain = build(contact_scene());
+  const ContactSetup plain = contact_setup(contact_scene());
   EXPECT_EQ(plain.geometry.tet_penalty_scale.size(), 0);
   EXPECT_EQ(plain.geometry.surface_penalty_scale.size(), 0);
 
@@ -119,7 +119,7 @@ TEST(BuildContact, RegionPenaltyScalesReachTheirTetsAndSurfaceTriangles) {
   // The "*" entry's factor covers the regions without an entry of their own.
   json starred = contact_scene();
   starred["bodies"][0]["regions"] = json::parse(R"({"*": {"material": "gel", "contact_penalty_scale": 3.0}})");
-  const ContactSetup star = build(starred);
+  const ContactSetup star = contact_setup(starred);
   ASSERT_EQ(star.geometry.tet_penalty_scale.size(), star.geometry.tets.rows());
   for (Index t = 0; t < star.geometry.tets.rows(); ++t)
     EXPECT_EQ(star.geometry.tet_penalty_scale[t], star.geometry.tet_body[t] == 0 ? 3.0 : 1.0) << "tet " << t;
@@ -137,7 +137,7 @@ TEST(BuildContact, DepthFromChosenFacesOnly) {
   json scene = contact_scene();
   scene["bodies"][0]["contact"] =
       json::parse(R"({"depth_nodes": [{"plane": {"point": [0, 0, 0], "normal": [0, 0, 1], "tolerance": 1e-9}}]})");
-  const ContactSetup setup = build(scene);
+  const ContactSetup setup = contact_setup(scene);
   const SceneConfig config = parse_scene(scene, "");
   const fem::Problem problem = build_problem(config);
   const auto& box = problem.bodies[0];
@@ -151,8 +151,8 @@ TEST(BuildContact, ExcludedFacesAreNeitherContactSurfaceNorZeroDepthSurface) {
   json scene = contact_scene();
   scene["bodies"][0]["contact"] =
       json::parse(R"({"exclude_faces": [{"plane": {"point": [0, 0, 0.5], "normal": [0, 0, 1], "tolerance": 1e-9}}]})");
-  const ContactSetup setup = build(scene);
-  const ContactSetup full = build(contact_scene());
+  const ContactSetup setup = contact_setup(scene);
+  const ContactSetup full = contact_setup(contact_scene());
   const SceneConfig config = parse_scene(scene, "");
   const fem::Problem problem = build_problem(config);
   const auto& box = problem.bodies[0];
@@ -199,7 +199,7 @@ TEST(BuildContact, DepthFromAFile) {
     for (Index v = 0; v < nodes; ++v) out << 0.5 * v << (v % 7 == 6 ? "\n" : " ");
   }
   scene["bodies"][0]["contact"] = {{"depth_file", path.string()}};
-  const ContactSetup setup = build(scene);
+  const ContactSetup setup = contact_setup(scene);
   for (Index v = 0; v < nodes; ++v) EXPECT_EQ(setup.geometry.depth[problem.bodies[0].first_node + v], 0.5 * v);
   {
     std::ofstream out(path);

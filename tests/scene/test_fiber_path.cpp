@@ -34,7 +34,9 @@ json slab_with_path() {
 
 /// Energy density of a 10 % stretch along `d`: largest along the fibers.
 double stretch_energy(const material::Material& law, const Vector3& d) {
-  const Matrix3 F = Matrix3::Identity() + 0.1 * d * d.transpose();
+  // Built in place: GCC 12 at -O1 takes Identity() + ... for a read of uninitialized memory.
+  Matrix3 F = 0.1 * d * d.transpose();
+  F.diagonal().array() += 1.0;
   return law.energy_density(F);
 }
 

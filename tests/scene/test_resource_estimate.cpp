@@ -21,7 +21,7 @@ using nlohmann::json;
 using testing::minimal_scene;
 using ::testing::HasSubstr;
 
-constexpr double kPi = std::numbers::pi;
+using std::numbers::pi;
 
 std::string build_error(const SceneConfig& config) {
   try {
@@ -62,22 +62,22 @@ TEST(ResourceEstimate, VolumeBoundsOfShapes) {
   mesh::Shape sphere;
   sphere.kind = mesh::Shape::Kind::Sphere;
   sphere.radius = 2;
-  EXPECT_DOUBLE_EQ(shape_volume_bound(sphere), 32 * kPi / 3);
+  EXPECT_DOUBLE_EQ(shape_volume_bound(sphere), 32 * pi / 3);
   mesh::Shape cylinder;
   cylinder.kind = mesh::Shape::Kind::Cylinder;
   cylinder.radius = 1;
   cylinder.axis = Vector3(0, 0, 4);
-  EXPECT_DOUBLE_EQ(shape_volume_bound(cylinder), 4 * kPi);
+  EXPECT_DOUBLE_EQ(shape_volume_bound(cylinder), 4 * pi);
   mesh::Shape torus;
   torus.kind = mesh::Shape::Kind::Torus;
   torus.radius = 2;
   torus.minor_radius = 0.5;
   torus.angle_deg = 180;
-  EXPECT_DOUBLE_EQ(shape_volume_bound(torus), kPi * 0.25 * kPi * 2);  // half of 2 pi^2 R r^2
+  EXPECT_DOUBLE_EQ(shape_volume_bound(torus), pi * 0.25 * pi * 2);  // half of 2 pi^2 R r^2
   mesh::Shape combined;
   combined.children = {box, sphere};
   combined.kind = mesh::Shape::Kind::Union;
-  EXPECT_DOUBLE_EQ(shape_volume_bound(combined), 6 + 32 * kPi / 3);
+  EXPECT_DOUBLE_EQ(shape_volume_bound(combined), 6 + 32 * pi / 3);
   combined.kind = mesh::Shape::Kind::Difference;
   EXPECT_DOUBLE_EQ(shape_volume_bound(combined), 6);
   combined.kind = mesh::Shape::Kind::Intersection;
@@ -92,10 +92,10 @@ TEST(ResourceEstimate, CurvedSurfacesAddTheirRefinedLayer) {
   options.element_size = 1;
   options.elements_per_turn = 0;  // element_size alone
   const double plain = estimated_tets({ball}, options);
-  EXPECT_DOUBLE_EQ(plain, kTetsPerEdgeCubed * 4 * kPi / 3);
+  EXPECT_DOUBLE_EQ(plain, kTetsPerEdgeCubed * 4 * pi / 3);
   options.elements_per_turn = 12;  // surface size 2 pi / 12 ~ 0.52
-  const double s = 2 * kPi / 12;
-  EXPECT_DOUBLE_EQ(estimated_tets({ball}, options), plain + kTetsPerEdgeCubed * 4 * kPi / (s * s));
+  const double s = 2 * pi / 12;
+  EXPECT_DOUBLE_EQ(estimated_tets({ball}, options), plain + kTetsPerEdgeCubed * 4 * pi / (s * s));
 }
 
 TEST(ResourceEstimate, EveryExampleIsWellUnderTheDefaultLimit) {

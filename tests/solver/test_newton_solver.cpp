@@ -20,9 +20,11 @@ namespace st = sinew::testing;
 
 namespace {
 
-constexpr double kC1 = 0.5, kC2 = 0.2, kA = 1.5, kStretch = 1.2;
-
-const solver::NewtonSetup kUnitCube{.characteristic_length = std::sqrt(3.0), .reference_force = 1.0};
+using st::kA;
+using st::kC1;
+using st::kC2;
+using st::kUnitCube;
+constexpr double kStretch = 1.2;
 
 /// The uniaxial rig at lambda = 1 with the pulled face moved and everything else at rest.
 struct Started {

@@ -26,7 +26,10 @@ namespace {
 using Predictor = solver::LoadSteppingOptions::Predictor;
 using LineSearchRule = solver::NewtonOptions::LineSearchRule;
 
-constexpr double kC1 = 0.5, kC2 = 0.2, kA = 1.5;
+using st::kA;
+using st::kC1;
+using st::kC2;
+using st::kUnitCube;
 
 /// Largest distance of a node from the homogeneous uniaxial state F = diag(l, s, s) (l the
 /// prescribed stretch, s the closed-form lateral stretch).
@@ -49,8 +52,6 @@ solver::StaticSolverOptions tight_options(int increments, Predictor predictor) {
   options.newton.increment_tolerance = 1e-12;
   return options;
 }
-
-const solver::NewtonSetup kUnitCube{.characteristic_length = std::sqrt(3.0), .reference_force = 1.0};
 
 /// What a static run did, step by step.
 struct StaticTrace {

@@ -10,10 +10,18 @@
 
 #include "sinew/fem/elastic_energy.hpp"
 #include "sinew/fem/external_force_energy.hpp"
+#include "sinew/solver/newton_solver.hpp"
 #include "sinew/solver/objective.hpp"
 #include "support/problem_builder.hpp"
 
 namespace sinew::testing {
+
+/// The rubber of the uniaxial rig in the solver tests: Mooney-Rivlin C1, C2 and the volume
+/// term's a (force / length², unit cube).
+inline constexpr double kC1 = 0.5, kC2 = 0.2, kA = 1.5;
+
+/// Newton's scales for the unit cube under unit forces: its diagonal and 1 N.
+inline const solver::NewtonSetup kUnitCube{.characteristic_length = std::sqrt(3.0), .reference_force = 1.0};
 
 /// Closed form of uniaxial tension for the seed's Mooney-Rivlin law, F = diag(l, s, s):
 /// the lateral stretch s zeroes the lateral nominal stress; returns (s, axial nominal stress).

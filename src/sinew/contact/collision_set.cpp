@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "sinew/collision/broad_phase.hpp"
+#include "sinew/contact/node_pair_key.hpp"
 #include "sinew/core/error.hpp"
 
 namespace sinew::contact {
@@ -18,8 +19,6 @@ namespace {
 std::uint64_t key(Index a, Index b) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
 }
-
-std::uint64_t block_key(Index a, Index b) { return a > b ? key(b, a) : key(a, b); }
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
@@ -136,7 +135,7 @@ void CollisionSet::grow_pattern() {
     const auto n = nodes(p);
     for (std::size_t i = 0; i < n.size(); ++i)
       for (std::size_t j = i + 1; j < n.size(); ++j)
-        if (n[i] != n[j] && pattern_.insert(block_key(n[i], n[j])).second) grew = true;
+        if (n[i] != n[j] && pattern_.insert(node_pair_key(n[i], n[j])).second) grew = true;
   }
   if (grew) ++revision_;
 }

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "sinew/contact/node_pair_key.hpp"
 #include "sinew/core/error.hpp"
 
 namespace sinew::contact {
@@ -34,10 +35,6 @@ Vector3 relative_position(const FrictionPoint& p, const std::array<Index, 7>& no
 std::array<double, 7> node_coefficients(const FrictionPoint& p) {
   return {p.triangle_weights[0], p.triangle_weights[1], p.triangle_weights[2], -p.tet_weights[0],
           -p.tet_weights[1],     -p.tet_weights[2],     -p.tet_weights[3]};
-}
-
-std::uint64_t block_key(Index a, Index b) {
-  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint64_t>(std::max(a, b));
 }
 
 }  // namespace
@@ -154,7 +151,7 @@ void FrictionEnergy::lag(const Positions& x) {
     const auto n = nodes(p);
     for (std::size_t i = 0; i < 7; ++i)
       for (std::size_t j = i + 1; j < 7; ++j)
-        if (n[i] != n[j] && pattern_.insert(block_key(n[i], n[j])).second) grew = true;
+        if (n[i] != n[j] && pattern_.insert(node_pair_key(n[i], n[j])).second) grew = true;
   }
   if (grew) ++revision_;
 }

@@ -19,17 +19,14 @@
 #include "sinew/scene/build_surface_mesh.hpp"
 #include "sinew/scene/mesh_cache.hpp"
 #include "sinew/scene/resource_estimate.hpp"
+#include "sinew/scene/scene_reading.hpp"
 #include "sinew/scene/schema.hpp"
 
 namespace sinew::scene {
 
 namespace {
 
-std::string quoted_names(const std::vector<std::string>& names) {
-  std::string text;
-  for (std::size_t i = 0; i < names.size(); ++i) text += (i > 0 ? ", " : "") + ("\"" + names[i] + "\"");
-  return text.empty() ? "(none)" : text;
-}
+using reading::quoted_names;
 
 template <typename Map>
 std::vector<std::string> keys_of(const Map& map) {

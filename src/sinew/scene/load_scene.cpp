@@ -22,6 +22,12 @@ namespace sinew::scene {
 using nlohmann::json;
 using namespace reading;  // NOLINT(google-build-using-namespace)
 
+std::string reading::quoted_names(const std::vector<std::string>& names) {
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) text += (i > 0 ? ", " : "") + json(names[i]).dump();
+  return text.empty() ? "(none)" : text;
+}
+
 namespace {
 
 std::string join_lines(const std::vector<std::string>& lines) {
@@ -30,11 +36,6 @@ std::string join_lines(const std::vector<std::string>& lines) {
   return text;
 }
 
-std::string quoted_names(const std::vector<std::string>& names) {
-  std::string text;
-  for (std::size_t i = 0; i < names.size(); ++i) text += (i > 0 ? ", " : "") + json(names[i]).dump();
-  return text.empty() ? "(none)" : text;
-}
 
 /// "; did you mean "x"?" or "; known: a, b" for a name that is not among `known`.
 std::string unknown_name_hint(const std::string& name, const std::vector<std::string>& known, const std::string& what) {

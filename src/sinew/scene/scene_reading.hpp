@@ -24,6 +24,10 @@ using nlohmann::json;
 
 inline constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 
+/// `"a", "b", "c"` (each name as a JSON string), or "(none)" for no names: the known names in a
+/// message about an unknown one.
+std::string quoted_names(const std::vector<std::string>& names);
+
 /// The errors found so far, each "<json path>: <message>".
 struct ReadErrors {
   std::vector<std::string> lines;
