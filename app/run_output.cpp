@@ -260,7 +260,10 @@ void RunOutput::write_increment(int increment, int increments, const fem::State&
   series_->add(state.lambda, name);
 }
 
-void RunOutput::finish_summary(nlohmann::json& j, double wall_seconds, const solver::PhaseTimes& times) const {
+void RunOutput::finish_summary(nlohmann::json& j, double wall_seconds, const solver::PhaseTimes& times,
+                               const solver::LinearCounts& linear) const {
+  j["factorizations"] = linear.factorizations;
+  j["linear_iterations"] = linear.linear_iterations;
   j["nodes"] = problem_.mesh.num_nodes();
   j["tets"] = problem_.mesh.num_tets();
   j["dofs"] = model_.dofs->num_dofs();
@@ -298,12 +301,13 @@ void RunOutput::write_summary(const solver::StepperResult& result, double wall_s
     j["snap_throughs"] = result.snap_throughs;
     j["multiplier_updates"] = result.refinements;
   }
-  finish_summary(j, wall_seconds, result.times);
+  finish_summary(j, wall_seconds, result.times, result.linear);
 }
 
 void RunOutput::write_stopped_summary(const std::string& scene_name, const std::string& status,
                                       const std::string& message, const std::string& reached_key, double reached,
-                                      double wall_seconds, const solver::PhaseTimes& times) {
+                                      double wall_seconds, const solver::PhaseTimes& times,
+                                      const solver::LinearCounts& linear) {
   try {
     flush_tables();
   } catch (const Error&) {  // the summary below may still fit
@@ -314,7 +318,7 @@ void RunOutput::write_stopped_summary(const std::string& scene_name, const std::
   j["status"] = status;
   j["message"] = message;
   j[reached_key] = reached;
-  finish_summary(j, wall_seconds, times);
+  finish_summary(j, wall_seconds, times, linear);
 }
 
 }  // namespace sinew::app

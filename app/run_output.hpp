@@ -74,11 +74,11 @@ class RunOutput {
   void write_summary(const solver::StepperResult& result, double wall_seconds, const std::string& scene_name);
   /// summary.json of a run stopped by something other than the solve (`status`: "output_error",
   /// "out_of_memory", "interrupted"), with the load parameter or time reached (`reached_key`: lambda_reached or
-  /// time_reached) and the phase times up to the last accepted step (what came after counts as
-  /// "other"); the CSV logs are flushed first.
+  /// time_reached), and the phase times and linear-solver counts up to the last accepted step
+  /// (the time after it counts as "other"); the CSV logs are flushed first.
   void write_stopped_summary(const std::string& scene_name, const std::string& status, const std::string& message,
                              const std::string& reached_key, double reached, double wall_seconds,
-                             const solver::PhaseTimes& times);
+                             const solver::PhaseTimes& times, const solver::LinearCounts& linear);
 
   /// Rows written so far to each CSV table, by table ("steps", "newton", "rigid_bodies"): what a
   /// checkpoint records so a resumed run goes on from the same rows.
@@ -100,7 +100,8 @@ class RunOutput {
   /// Rewrites steps.csv, newton.csv and rigid_bodies.csv with every row so far.
   void flush_tables() const;
   /// Adds the mesh sizes and the time per phase to `j` and writes summary.json.
-  void finish_summary(nlohmann::json& j, double wall_seconds, const solver::PhaseTimes& times) const;
+  void finish_summary(nlohmann::json& j, double wall_seconds, const solver::PhaseTimes& times,
+                      const solver::LinearCounts& linear) const;
   /// Contact figures of `state` (contact::contact_report; the model's contact energy is not
   /// changed), none without contact.
   std::optional<contact::ContactReport> contact_statistics(const fem::State& state) const;

@@ -229,7 +229,8 @@ RunReport run_model(model::Model& model, const scene::OutputConfig& output_confi
     try {
       const model::RunSnapshot* last = checkpoints.latest();
       output.write_stopped_summary(model.name, status, message, reached_key, reached, seconds_since(start),
-                                   last ? last->stepper.times : solver::PhaseTimes{});
+                                   last ? last->stepper.times : solver::PhaseTimes{},
+                                   last ? last->stepper.linear : solver::LinearCounts{});
     } catch (...) {  // the disk may still be full: the message on standard error remains
     }
   };

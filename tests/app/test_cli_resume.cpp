@@ -231,6 +231,7 @@ TEST_F(Resume, SigintStopsADynamicRunWithItsOwnExitCodeAndACheckpointThatResumes
   // The phase times up to the last accepted step (a checkpoint is on disk: Newton has worked).
   EXPECT_GT(summary.at("seconds").at("forces_and_stiffness").get<double>(), 0);
   EXPECT_GT(summary.at("seconds").at("linear_solve").get<double>(), 0);
+  EXPECT_GT(summary.at("factorizations").get<int>(), 0);
   EXPECT_TRUE(fs::exists(output / "last_converged.vtu"));
 
   const CommandResult resumed = run_sinew(arguments(output, {"--resume"}), directory);

@@ -130,6 +130,9 @@ TEST(DynamicsExamples, SaggingBarsSettleOnTheStaticSolution) {
   for (const char* phase : {"setup", "forces_and_stiffness", "collision", "linear_solve", "line_search", "other"})
     phases += seconds.at(phase).get<double>();
   EXPECT_NEAR(phases, summary.at("wall_seconds").get<double>(), 0.05 * summary.at("wall_seconds").get<double>());
+  // A direct solver: at least one factorization per Newton iteration, no iterative solves.
+  EXPECT_GE(summary.at("factorizations").get<int>(), summary.at("newton_iterations").get<int>());
+  EXPECT_EQ(summary.at("linear_iterations").get<int>(), 0);
 }
 
 // falling-rods (dissertation Fig. 51), reduced to the 2 x 3 rods at the middle of the two lowest

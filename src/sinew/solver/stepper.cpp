@@ -22,10 +22,13 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
     times.collision = objective.collision_seconds() - collision_before;
     return times;
   };
+  auto linear_so_far = [&] {
+    return LinearCounts{.factorizations = newton.counts().factorizations - counts_before.factorizations,
+                        .linear_iterations = newton.counts().linear_iterations - counts_before.linear_iterations};
+  };
   auto finish = [&](StepperResult& r) -> StepperResult& {
     r.times = times_so_far();
-    r.linear.factorizations = newton.counts().factorizations - counts_before.factorizations;
-    r.linear.linear_iterations = newton.counts().linear_iterations - counts_before.linear_iterations;
+    r.linear = linear_so_far();
     if (r.steps == 0) r.min_step = 0;
     r.last_velocity = scheme.velocity();
     return r;
@@ -174,6 +177,7 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
                              result.snap_throughs, result.refinements, result.min_step, result.max_step};
           snapshot.scheme = scheme.memory(current, newton);
           snapshot.times = times_so_far();
+          snapshot.linear = linear_so_far();
           callbacks.on_accepted(snapshot);
         }
         continue;

@@ -62,9 +62,10 @@ struct StepperSnapshot {
   StepRecord record;           ///< the last accepted step
   StepCounts counts;
   SchemeMemory scheme;
-  /// Seconds spent per phase by this process's run_stepper so far (not written to checkpoints:
-  /// a stopped run's summary reports them up to its last accepted step).
+  /// Seconds spent per phase and linear-solver work by this process's run_stepper so far (not
+  /// written to checkpoints: a stopped run's summary reports them up to its last accepted step).
   PhaseTimes times;
+  LinearCounts linear;
 };
 
 struct StepperCallbacks {
