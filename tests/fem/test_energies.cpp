@@ -12,8 +12,8 @@
 
 using namespace sinew;
 namespace st = sinew::testing;
-using st::flat;
-using st::unflat;
+using st::flatten;
+using st::unflatten;
 
 namespace {
 
@@ -47,8 +47,8 @@ TEST_P(ElasticEnergyFD, GradientAndHessianMatchFiniteDifferences) {
 
   NodalVectors g = NodalVectors::Zero(x.rows(), 3);
   energy.add_gradient(x, g);
-  const VectorX fd_g = st::fd_gradient([&](const VectorX& v) { return energy.value(unflat(v)); }, flat(x), 1e-6);
-  EXPECT_LT(st::relative_error(flat(g), fd_g), 1e-7);
+  const VectorX fd_g = st::fd_gradient([&](const VectorX& v) { return energy.value(unflatten(v)); }, flatten(x), 1e-6);
+  EXPECT_LT(st::relative_error(flatten(g), fd_g), 1e-7);
 
   std::vector<std::pair<Index, Index>> pairs;
   energy.hessian_pattern(pairs);
@@ -59,10 +59,10 @@ TEST_P(ElasticEnergyFD, GradientAndHessianMatchFiniteDifferences) {
   const MatrixX fd_H = st::fd_jacobian(
       [&](const VectorX& v) {
         NodalVectors gv = NodalVectors::Zero(x.rows(), 3);
-        energy.add_gradient(unflat(v), gv);
-        return flat(gv);
+        energy.add_gradient(unflatten(v), gv);
+        return flatten(gv);
       },
-      flat(x), 1e-6);
+      flatten(x), 1e-6);
   const MatrixX dense = H.to_dense();
   EXPECT_LT(st::relative_error(dense, fd_H), 1e-7);
   EXPECT_LT((dense - dense.transpose()).norm(), 1e-10 * dense.norm());

@@ -14,7 +14,7 @@
 
 using namespace sinew;
 namespace st = sinew::testing;
-using st::flat;
+using st::flatten;
 using fem::MassKind;
 
 namespace {
@@ -82,7 +82,7 @@ TEST_P(MassMatrixKinds, RigidTranslationKineticEnergyIsHalfMassSpeedSquared) {
   const MatrixX M3 = expand3(fem::mass_matrix(m.rest, m.tets, m.region, kDensity, GetParam()));
   const Vector3 v(0.3, -1.2, 2.5);
   const Positions velocity = Positions::Ones(m.num_nodes(), 3) * v.asDiagonal();
-  const VectorX vf = flat(velocity);
+  const VectorX vf = flatten(velocity);
   const double mass = total_mass(m, kDensity);
   EXPECT_NEAR(0.5 * vf.dot(M3 * vf), 0.5 * mass * v.squaredNorm(), 1e-12 * mass * v.squaredNorm());
 }
@@ -184,7 +184,7 @@ TEST(MassMatrix, ConsistentIntegratesRigidRotationKineticEnergyExactly) {
 
   Positions velocity(m.num_nodes(), 3);
   for (Index a = 0; a < m.num_nodes(); ++a) velocity.row(a) = w.cross(Vector3(m.rest.row(a))).transpose();
-  const VectorX v = flat(velocity);
+  const VectorX v = flatten(velocity);
   const MatrixX C3 = expand3(fem::mass_matrix(m.rest, m.tets, m.region, {rho}, MassKind::Consistent));
   const MatrixX L3 = expand3(fem::mass_matrix(m.rest, m.tets, m.region, {rho}, MassKind::Lumped));
   EXPECT_NEAR(0.5 * v.dot(C3 * v), exact, 1e-12 * exact);

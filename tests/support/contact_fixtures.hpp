@@ -12,6 +12,7 @@
 #include "sinew/contact/contact_energy.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
 #include "support/box_mesh.hpp"
+#include "support/flat_positions.hpp"
 
 namespace sinew::testing {
 
@@ -55,13 +56,6 @@ inline TwoBoxes two_boxes(int n, const Vector3& offset, double angle, double pen
   g.penalty = MatrixX::Constant(2, 2, penalty);
   if (!self_contact) g.penalty.diagonal().setZero();
   return out;
-}
-
-inline Eigen::VectorXd flatten(const Positions& x) {
-  return Eigen::Map<const Eigen::VectorXd>(x.data(), x.size());
-}
-inline Positions unflatten(const Eigen::VectorXd& v) {
-  return Eigen::Map<const Positions>(v.data(), v.size() / 3, 3);
 }
 
 /// -dEc/dx... as the energy adds it: the gradient of `energy` at x (#V x 3), after update(x).

@@ -9,7 +9,7 @@
 
 namespace sinew::testing {
 
-inline VectorX flat(const Positions& x) { return Eigen::Map<const VectorX>(x.data(), x.size()); }
-inline Positions unflat(const VectorX& v) { return Eigen::Map<const Positions>(v.data(), v.size() / 3, 3); }
+inline VectorX flatten(const Positions& x) { return Eigen::Map<const VectorX>(x.data(), x.size()); }
+inline Positions unflatten(const VectorX& v) { return Eigen::Map<const Positions>(v.data(), v.size() / 3, 3); }
 
 }  // namespace sinew::testing

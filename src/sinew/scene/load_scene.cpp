@@ -36,7 +36,6 @@ std::string join_lines(const std::vector<std::string>& lines) {
   return text;
 }
 
-
 /// "; did you mean "x"?" or "; known: a, b" for a name that is not among `known`.
 std::string unknown_name_hint(const std::string& name, const std::vector<std::string>& known, const std::string& what) {
   if (const auto suggestion = closest_match(name, known)) return "; did you mean " + json(*suggestion).dump() + "?";
