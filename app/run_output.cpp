@@ -264,6 +264,7 @@ void RunOutput::finish_summary(nlohmann::json& j, double wall_seconds, const sol
                                const solver::LinearCounts& linear) const {
   j["factorizations"] = linear.factorizations;
   j["linear_iterations"] = linear.linear_iterations;
+  j["undone_lagged_steps"] = linear.undone_lagged_steps;
   j["nodes"] = problem_.mesh.num_nodes();
   j["tets"] = problem_.mesh.num_tets();
   j["dofs"] = model_.dofs->num_dofs();

@@ -33,6 +33,7 @@ void record(benchmark::State& state, const app::RunReport& report) {
   state.counters["cuts"] = r.cuts;
   state.counters["factorizations"] = r.linear.factorizations;
   state.counters["linear_its"] = r.linear.linear_iterations;
+  state.counters["undone_lagged"] = r.linear.undone_lagged_steps;
   bench::set_phase_counters(state, report, r.times);
 }
 

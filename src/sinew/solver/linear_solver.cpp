@@ -49,6 +49,7 @@ class CholmodSolver final : public LinearSolver {
   LinearSolveStats solve(const VectorX& b, VectorX& x) override {
     if (!lagged_) return direct_solve(b, x);
     LinearSolveStats stats = lagged_cg(b, x);
+    stats.lagged = stats.success;
     if (stats.success) return stats;
     const int cg_iterations = stats.iterations;
     if (!factorize_now()) {

@@ -19,6 +19,9 @@ struct LinearSolveStats {
   bool success = false;
   int iterations = 0;             ///< 0 for direct solvers
   double relative_residual = 0;   ///< |K x - b| / |b|
+  /// Solved by CG preconditioned with an earlier matrix's factorization (lagged CHOLMOD): an
+  /// inexact solution, where require_relative_residual(0) would give an exact one.
+  bool lagged = false;
 };
 
 class LinearSolver {

@@ -28,6 +28,7 @@ Direction newton_direction(const SparseMatrix& K, bool fresh_pattern, const Vect
       if (stats.success && g.dot(dq) < 0) {
         d.dq = std::move(dq);
         d.regularization = shift;
+        d.lagged = stats.lagged;
         d.factorizations = linear.factorizations() - factorizations_before;
         return d;
       }

@@ -12,6 +12,7 @@ struct Direction {
   int linear_iterations = 0;   ///< of the iterative solver, summed over the attempts (0 for direct)
   int attempts = 0;            ///< matrices tried (K, then K + shift diag(K) for growing shifts)
   int factorizations = 0;      ///< numeric factorizations the attempts took (lagged CG may take none)
+  bool lagged = false;         ///< dq came from a lagged (inexact) solve, see LinearSolveStats::lagged
   /// Relative diagonal shift that gave dq (0: none); +inf when every attempt failed and dq is
   /// diagonally scaled steepest descent.
   double regularization = 0;

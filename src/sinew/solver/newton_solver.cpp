@@ -74,6 +74,7 @@ LinearCounts NewtonSolver::counts() const {
   LinearCounts counts;
   counts.factorizations = linear_->factorizations();
   counts.linear_iterations = linear_iterations_;
+  counts.undone_lagged_steps = undone_lagged_steps_;
   return counts;
 }
 
@@ -142,6 +143,7 @@ NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options
 
   double increment = std::numeric_limits<double>::infinity();
   double previous_residual = residual;
+  bool redo_exact = false;  // the last lagged step was undone: solve this iteration exactly
   for (int it = 0;; ++it) {
     const double tolerance =
         std::max(options.residual_tolerance * scale, kRoundoffResidual * context.reference_force);
@@ -170,8 +172,8 @@ NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options
       return result;
     }
 
-    bool fresh;
-    {
+    bool fresh = false;
+    if (!redo_exact) {  // else K_ is still this state's tangent
       PhaseTimer watch(times.forces_and_stiffness, objective);
       fresh = objective.hessian(state, full_g, context.node_viscosity, K_);
     }
@@ -181,7 +183,7 @@ NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options
       // An inexact (lagged) solve is used while Newton makes progress; when the last iteration
       // did not halve the residual, this one solves exactly (an inexact direction can stall
       // Newton, near round-off for one; docs/solver.md, "Lagged factorizations").
-      const bool stalling = it > 0 && residual > 0.5 * previous_residual;
+      const bool stalling = redo_exact || (it > 0 && residual > 0.5 * previous_residual);
       linear_->require_relative_residual(stalling ? 0.0 : 1.0);
       pass_rigid_body_modes(state);
       direction = newton_direction(K_, fresh, g, *linear_,
@@ -248,18 +250,27 @@ NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options
       trial_g = std::move(point.g);
       trial_scale = point.scale;
     }
+    if (trial_full_g.rows() == 0) {
+      PhaseTimer watch(times.forces_and_stiffness, objective);
+      trial_full_g = objective.full_gradient(trial, &trial_scale);
+      trial_g = dofs.reduce_gradient(trial, trial_full_g);
+    }
+    // An inexact (lagged) direction can lower the energy into a state whose forces explode: an
+    // element driven nearly flat. Undo such a step and solve this iteration exactly
+    // (docs/solver.md, "Lagged factorizations").
+    if (direction.lagged && !(trial_g.norm() <= options.max_lagged_residual_growth * residual)) {
+      redo_exact = true;
+      ++undone_lagged_steps_;
+      --it;
+      continue;
+    }
+    redo_exact = false;
     increment = largest_displacement(trial, state);
     state = std::move(trial);
     energy = trial_energy;
-    if (trial_full_g.rows() == 0) {
-      PhaseTimer watch(times.forces_and_stiffness, objective);
-      full_g = objective.full_gradient(state, &scale);
-      g = dofs.reduce_gradient(state, full_g);
-    } else {
-      full_g = std::move(trial_full_g);
-      g = std::move(trial_g);
-      scale = trial_scale;
-    }
+    full_g = std::move(trial_full_g);
+    g = std::move(trial_g);
+    scale = trial_scale;
     previous_residual = residual;
     residual = g.norm();
 

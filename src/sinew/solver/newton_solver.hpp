@@ -49,6 +49,9 @@ struct PhaseTimes {
 struct LinearCounts {
   int factorizations = 0;     ///< numeric factorizations, shifted retries included
   int linear_iterations = 0;  ///< iterations of iterative or lagged solves
+  /// Lagged (inexact) Newton steps undone because they multiplied the residual by more than
+  /// NewtonOptions::max_lagged_residual_growth, and solved again exactly.
+  int undone_lagged_steps = 0;
 };
 
 /// Adds the wall time of its scope to `sink`, except the time `objective` spent in collision
@@ -145,6 +148,7 @@ class NewtonSolver {
   NewtonSetup setup_;
   PhaseTimes times_;
   int linear_iterations_ = 0;
+  int undone_lagged_steps_ = 0;
   /// The shift the last climb from an unshifted failure reached (0: none yet), kept
   /// between solves: a tangent that turns indefinite again usually needs a shift of that scale,
   /// and climbing tenfold from the smallest shift costs up to ten failed factorizations.

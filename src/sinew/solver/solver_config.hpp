@@ -47,6 +47,11 @@ struct NewtonOptions {
   /// default: on the Visible Human knee (18 mm) steps stretched along shifted directions led
   /// into indefinite regions and the run halved ten times by 35 degrees.
   double max_step_growth = 1;
+  /// Lagged linear solves only (LinearSolverOptions::lagged_iterations > 0): an accepted step
+  /// along an inexact direction that multiplies the residual by more than this is undone, and
+  /// the iteration solves exactly. Such a step lowers the energy but drives an element nearly
+  /// flat, where the forces explode (docs/solver.md, "Lagged factorizations"). +inf: never.
+  double max_lagged_residual_growth = 10;
 };
 
 /// See NewtonOptions::max_step_growth.

@@ -24,7 +24,9 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
   };
   auto linear_so_far = [&] {
     return LinearCounts{.factorizations = newton.counts().factorizations - counts_before.factorizations,
-                        .linear_iterations = newton.counts().linear_iterations - counts_before.linear_iterations};
+                        .linear_iterations = newton.counts().linear_iterations - counts_before.linear_iterations,
+                        .undone_lagged_steps =
+                            newton.counts().undone_lagged_steps - counts_before.undone_lagged_steps};
   };
   auto finish = [&](StepperResult& r) -> StepperResult& {
     r.times = times_so_far();
