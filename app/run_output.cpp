@@ -301,6 +301,12 @@ void RunOutput::write_summary(const solver::StepperResult& result, double wall_s
     j["step_cuts"] = result.cuts;
     j["snap_throughs"] = result.snap_throughs;
     j["multiplier_updates"] = result.refinements;
+    // Viscous stabilization (solver.stabilization): steps taken with it and the energy its
+    // forces dissipated, against the energy stored at the end (their ratio should stay small).
+    j["stabilized_steps"] = result.stabilized_steps;
+    j["stabilization_dissipated_energy"] = result.dissipated;
+    const double stored = result.stabilized_steps > 0 ? model_.elastic->value(result.last_state.x) : 0.0;
+    j["stabilization_energy_ratio"] = stored > 0 ? result.dissipated / stored : 0.0;
   }
   finish_summary(j, wall_seconds, result.times, result.linear);
 }

@@ -91,9 +91,11 @@ solver::StepperCallbacks output_callbacks(const model::Model& model, RunOutput& 
     if (options.log_steps)
       log_line(bar, spdlog::level::info,
                fmt::format("step {:4d}  increment {}/{}  lambda {:.5f}  newton {:2d}  |r| {:.2e} (scale {:.2e})  "
-                           "energy {:.6e}{}",
+                           "energy {:.6e}{}{}",
                            step.step, step.segment, increments, step.t, step.newton_iterations, step.residual,
-                           step.force_scale, step.energy, step.snap_through ? "  (snap-through: long Newton budget)" : ""));
+                           step.force_scale, step.energy, step.snap_through ? "  (snap-through: long Newton budget)" : "",
+                           step.dissipated > 0 ? fmt::format("  (stabilized: {:.3e} dissipated)", step.dissipated)
+                                               : ""));
     bar.update(step.t, fmt::format("increment {}/{}", step.segment, increments));
   };
   callbacks.on_segment = [&output, dynamic, increments](int k, const solver::StepRecord& step, const fem::State& state,
@@ -112,6 +114,13 @@ solver::StepperCallbacks output_callbacks(const model::Model& model, RunOutput& 
              dynamic ? fmt::format("time step to t = {:.6g} (h = {:.3g}) failed, halving: {}", step.t, step.step_size, why)
                      : fmt::format("step to lambda {:.5f} (size {:.3g}) failed, halving: {}", step.t, step.step_size,
                                    why));
+  };
+  callbacks.on_stabilize = [&bar](const solver::StepRecord& step, const std::string& why) {
+    log_line(bar, spdlog::level::warn,
+             fmt::format("step to lambda {:.6g} failed at the smallest allowed size ({:.3g}): {}. Going on with "
+                         "viscous stabilization (solver.stabilization) for the rest of the run; the energy it "
+                         "dissipates is reported in summary.json",
+                         step.t, step.step_size, why));
   };
   return callbacks;
 }

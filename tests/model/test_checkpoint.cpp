@@ -89,6 +89,10 @@ void expect_same(const RunSnapshot& a, const RunSnapshot& b) {
   EXPECT_EQ(a.stepper.scheme.previous.x, b.stepper.scheme.previous.x);
   EXPECT_EQ(a.stepper.scheme.tangent, b.stepper.scheme.tangent);
   EXPECT_EQ(a.stepper.scheme.velocity, b.stepper.scheme.velocity);
+  EXPECT_EQ(a.stepper.record.dissipated, b.stepper.record.dissipated);
+  EXPECT_EQ(a.stepper.counts.stabilized_steps, b.stepper.counts.stabilized_steps);
+  EXPECT_EQ(a.stepper.counts.dissipated, b.stepper.counts.dissipated);
+  EXPECT_EQ(a.stepper.scheme.stabilized, b.stepper.scheme.stabilized);
   EXPECT_EQ(a.contact_penalty, b.contact_penalty);
   EXPECT_EQ(a.contact_pressure, b.contact_pressure);
 }
@@ -98,8 +102,14 @@ TEST(Checkpoint, AFileHoldsTheSnapshotExactly) {
   const SolvedRun run = solve(model);
   ASSERT_TRUE(run.result.success) << run.result.message;
   ASSERT_GE(run.snapshots.size(), 6u);
-  const RunSnapshot& snapshot = run.snapshots[2];
+  RunSnapshot snapshot = run.snapshots[2];
   EXPECT_GT(snapshot.stepper.scheme.tangent.size(), 0);  // the tangent predictor's direction
+  EXPECT_FALSE(snapshot.stepper.scheme.stabilized);
+  // As a stabilized run would have them (solver.stabilization).
+  snapshot.stepper.scheme.stabilized = true;
+  snapshot.stepper.record.dissipated = 0.25;
+  snapshot.stepper.counts.stabilized_steps = 7;
+  snapshot.stepper.counts.dissipated = 1.5;
   EXPECT_GT(snapshot.stepper.scheme.previous.x.rows(), 0);
   sinew::testing::TempDir directory;
   const std::string path = (directory / kCheckpointFile).string();

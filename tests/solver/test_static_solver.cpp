@@ -315,6 +315,126 @@ TEST(StaticSolver, SnapThroughBudgetCarriesTheSolutionPastALimitPoint) {
   EXPECT_LT(u.rightCols(2).cwiseAbs().maxCoeff(), 1e-10);
 }
 
+// solver.stabilization: with no snap-through budget the steps get stuck at the fold (above);
+// with the pseudo-viscous term switched on there, the run goes on, crosses into the right well
+// and ends next to the equilibrium at lambda = 1, reporting the steps and the energy it damped.
+TEST(StaticSolver, StabilizationCarriesTheStepsPastALimitPointWhereTheyGetStuck) {
+  DoubleWellRig rig;
+  BlockSparseMatrix D;
+  D.set_pattern(rig.problem.mesh.num_nodes(), {});
+  const double damping = 0.05;  // against the well's stiffness k = 10
+  for (Index a = 0; a < D.num_nodes(); ++a) D.add(D.find(a, a), damping * Matrix3::Identity());
+  fem::QuadraticEnergy stabilization("stabilization", D);
+  solver::Objective objective(rig.dofs, std::vector<Energy*>{&rig.well, &stabilization}, rig.problem.mesh.num_nodes());
+  solver::StaticSolverOptions options;
+  options.stepping.increments = 10;
+  options.stepping.snap_through_after_cuts = 0;
+  options.newton.max_iterations = 8;
+  options.newton.residual_tolerance = 1e-10;
+  const solver::NewtonSetup setup{.characteristic_length = 1.0, .reference_force = 1.0};
+
+  std::vector<solver::StepRecord> steps;
+  std::vector<double> equilibrium_residuals;  // of each step's last Newton iteration
+  int stabilize_calls = 0;
+  double stuck_at = 0;
+  solver::StepperCallbacks callbacks;
+  callbacks.on_step = [&](const solver::StepRecord& step, const fem::State&, const NodalVectors&) {
+    steps.push_back(step);
+  };
+  callbacks.on_iteration = [&](const solver::StepRecord& step, const solver::IterationRecord& it) {
+    if (step.step == 0) return;  // the solve at lambda = 0
+    if (static_cast<int>(equilibrium_residuals.size()) < step.step) equilibrium_residuals.resize(step.step);
+    equilibrium_residuals[static_cast<std::size_t>(step.step - 1)] = it.equilibrium_residual;
+  };
+  callbacks.on_stabilize = [&](const solver::StepRecord& step, const std::string& why) {
+    ++stabilize_calls;
+    stuck_at = step.t - step.step_size;
+    EXPECT_FALSE(why.empty());
+  };
+  const auto result = solver::solve_static(objective, options, setup, callbacks, nullptr, nullptr, &stabilization);
+  ASSERT_TRUE(result.success) << result.message;
+  EXPECT_EQ(stabilize_calls, 1);
+  EXPECT_NEAR(stuck_at, 0.82, 0.02) << "where the plain steps got stuck";
+  EXPECT_EQ(result.snap_throughs, 0);
+  ASSERT_GE(result.stabilized_steps, 1);
+  // Steps before the fold are plain equilibria; every step after it is stabilized and damps.
+  double dissipated = 0;
+  int stabilized = 0;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (steps[i].t < stuck_at + 1e-12) {
+      EXPECT_EQ(steps[i].dissipated, 0.0) << "step " << steps[i].step;
+      EXPECT_DOUBLE_EQ(equilibrium_residuals.at(i), steps[i].residual);
+    } else {
+      EXPECT_GT(steps[i].dissipated, 0.0) << "step " << steps[i].step;
+      ++stabilized;
+      // newton.csv's equilibrium residual leaves the viscous forces out.
+      EXPECT_NE(equilibrium_residuals.at(i), steps[i].residual);
+    }
+    dissipated += steps[i].dissipated;
+  }
+  EXPECT_EQ(stabilized, result.stabilized_steps);
+  EXPECT_NEAR(result.dissipated, dissipated, 1e-12 * dissipated);
+  // Crossing from the left well to the right one (u from about -0.6 to 1.2 on 8 nodes) releases
+  // energy, which the damping takes (77 here).
+  EXPECT_GT(result.dissipated, 10.0);
+  // At lambda = 1 the state lies in the right well near its root; the viscous forces that are
+  // left (D times the last steps' rate of motion) keep it off by a little.
+  double root = 1.2;
+  for (int i = 0; i < 50; ++i) root -= (root * root * root - root - 0.6) / (3 * root * root - 1);
+  const Positions u = result.last_state.x - rig.problem.mesh.rest;
+  EXPECT_EQ(result.last_state.lambda, 1.0);
+  EXPECT_NEAR(u.col(0).minCoeff(), root, 5e-3);  // 1.2207 against 1.2212
+  EXPECT_NEAR(u.col(0).maxCoeff(), root, 5e-3);
+
+  // With stabilization 0 (no term) the same steps stop at the fold.
+  DoubleWellRig plain;
+  const auto stopped = solver::solve_static(plain.objective, options, setup);
+  EXPECT_FALSE(stopped.success);
+  EXPECT_NEAR(stopped.last_state.lambda, stuck_at, 1e-12);
+  EXPECT_EQ(stopped.stabilized_steps, 0);
+}
+
+// A stabilized run resumed from any accepted step (before the fold, and after the stabilization
+// started) ends where the uninterrupted run ended, with the same counts and dissipated energy.
+TEST(StaticSolver, AStabilizedRunResumesExactly) {
+  auto run = [](const solver::StepperSnapshot* resume, std::vector<solver::StepperSnapshot>* snapshots) {
+    DoubleWellRig rig;
+    BlockSparseMatrix D;
+    D.set_pattern(rig.problem.mesh.num_nodes(), {});
+    for (Index a = 0; a < D.num_nodes(); ++a) D.add(D.find(a, a), 0.05 * Matrix3::Identity());
+    fem::QuadraticEnergy stabilization("stabilization", D);
+    solver::Objective objective(rig.dofs, std::vector<Energy*>{&rig.well, &stabilization},
+                                rig.problem.mesh.num_nodes());
+    solver::StaticSolverOptions options;
+    options.stepping.increments = 10;
+    options.stepping.snap_through_after_cuts = 0;
+    options.newton.max_iterations = 8;
+    options.newton.residual_tolerance = 1e-10;
+    solver::StepperCallbacks callbacks;
+    if (snapshots) callbacks.on_accepted = [&](const solver::StepperSnapshot& s) { snapshots->push_back(s); };
+    return solver::solve_static(objective, options, {.characteristic_length = 1.0, .reference_force = 1.0},
+                                callbacks, nullptr, resume, &stabilization);
+  };
+  std::vector<solver::StepperSnapshot> snapshots;
+  const auto whole = run(nullptr, &snapshots);
+  ASSERT_TRUE(whole.success) << whole.message;
+  ASSERT_GE(whole.stabilized_steps, 2);
+  int before = 0, after = 0;
+  for (const solver::StepperSnapshot& snapshot : snapshots) {
+    if (snapshot.t > 0.95) continue;
+    (snapshot.scheme.stabilized ? after : before)++;
+    const auto resumed = run(&snapshot, nullptr);
+    ASSERT_TRUE(resumed.success) << resumed.message;
+    EXPECT_EQ(resumed.steps, whole.steps);
+    EXPECT_EQ(resumed.cuts, whole.cuts);
+    EXPECT_EQ(resumed.stabilized_steps, whole.stabilized_steps);
+    EXPECT_NEAR(resumed.dissipated, whole.dissipated, 1e-12 * whole.dissipated);
+    EXPECT_LT((resumed.last_state.x - whole.last_state.x).cwiseAbs().maxCoeff(), 1e-12) << "from t = " << snapshot.t;
+  }
+  EXPECT_GE(before, 3);
+  EXPECT_GE(after, 1);
+}
+
 // Nodal forces of 1e200 are finite, and so is the energy, but the residual's norm overflows:
 // the residual and the force scale are infinite, and inf <= inf once passed the convergence
 // test and the run reported "solved" after 0 iterations.

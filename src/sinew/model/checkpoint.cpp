@@ -80,7 +80,13 @@ json record_json(const solver::StepRecord& r) {
           {"step_size", r.step_size}, {"newton_iterations", r.newton_iterations},
           {"residual", r.residual},   {"force_scale", r.force_scale},
           {"energy", r.energy},       {"cuts", r.cuts},   {"snap_through", r.snap_through},
-          {"refinements", r.refinements}};
+          {"refinements", r.refinements}, {"dissipated", r.dissipated}};
+}
+
+/// A number written by later versions of sinew, or `absent` in a checkpoint from before it.
+template <typename T>
+T optional_field(const json& j, const char* name, T absent) {
+  return j.contains(name) ? j.at(name).get<T>() : absent;
 }
 
 solver::StepRecord record_from(const json& j) {
@@ -96,6 +102,7 @@ solver::StepRecord record_from(const json& j) {
   r.cuts = field(j, "cuts").get<int>();
   r.snap_through = field(j, "snap_through").get<bool>();
   r.refinements = field(j, "refinements").get<int>();
+  r.dissipated = optional_field(j, "dissipated", 0.0);  // before stabilization: none
   return r;
 }
 
@@ -107,7 +114,9 @@ json counts_json(const solver::StepCounts& c) {
           {"snap_throughs", c.snap_throughs},
           {"refinements", c.refinements},
           {"min_step", c.min_step},
-          {"max_step", c.max_step}};
+          {"max_step", c.max_step},
+          {"stabilized_steps", c.stabilized_steps},
+          {"dissipated", c.dissipated}};
 }
 
 solver::StepCounts counts_from(const json& j) {
@@ -120,6 +129,8 @@ solver::StepCounts counts_from(const json& j) {
   c.refinements = field(j, "refinements").get<int>();
   c.min_step = field(j, "min_step").get<double>();
   c.max_step = field(j, "max_step").get<double>();
+  c.stabilized_steps = optional_field(j, "stabilized_steps", 0);
+  c.dissipated = optional_field(j, "dissipated", 0.0);
   return c;
 }
 
@@ -143,7 +154,8 @@ json checkpoint_json(const Checkpoint& c) {
             {"scheme",
              {{"previous", state_json(s.scheme.previous)},
               {"tangent", matrix_json(s.scheme.tangent)},
-              {"velocity", matrix_json(s.scheme.velocity)}}}}},
+              {"velocity", matrix_json(s.scheme.velocity)},
+              {"stabilized", s.scheme.stabilized}}}}},
           {"contact_penalty", matrix_json(c.snapshot.contact_penalty)},
           {"contact_pressure", matrix_json(c.snapshot.contact_pressure)},
           {"counters", c.counters},
@@ -171,6 +183,7 @@ Checkpoint checkpoint_from(const json& j) {
   if (tangent.cols() > 1) throw Malformed{"the predictor's tangent is not a vector"};
   snapshot.scheme.tangent = tangent.reshaped();
   snapshot.scheme.velocity = matrix_from(scheme, "velocity");
+  snapshot.scheme.stabilized = optional_field(scheme, "stabilized", false);
   c.snapshot.contact_penalty = matrix_from(j, "contact_penalty");
   const MatrixX pressure = matrix_from(j, "contact_pressure");
   if (pressure.cols() > 1) throw Malformed{"the contact pressures are not a vector"};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -79,6 +80,32 @@ Dynamics make_dynamics(const scene::DynamicsConfig& config, const fem::Problem& 
   return d;
 }
 
+/// The static stepping's stabilization (solver::LoadSteppingOptions::stabilization): D_a = eta x
+/// mu_min x (rest volume of the tets around a)^(1/3) on every node that is not fixed or
+/// prescribed, mu_min the smallest initial shear modulus of the deformable regions. Null when
+/// eta = 0 or no region deforms.
+std::unique_ptr<fem::QuadraticEnergy> make_stabilization(const fem::Problem& problem, const fem::DofMap& dofs,
+                                                         double eta) {
+  double shear = std::numeric_limits<double>::infinity();
+  for (const auto& law : problem.region_material)
+    if (law) shear = std::min(shear, law->initial_shear_modulus());
+  if (!(eta > 0) || !std::isfinite(shear) || !(shear > 0)) return nullptr;
+  const auto& mesh = problem.mesh;
+  VectorX volume = VectorX::Zero(mesh.num_nodes());
+  for (Index t = 0; t < mesh.num_tets(); ++t) {
+    const double v = std::abs(mesh::signed_volume(mesh.rest, mesh.tets, t));
+    for (int i = 0; i < 4; ++i) volume[mesh.tets(t, i)] += v;
+  }
+  BlockSparseMatrix D;
+  D.set_pattern(mesh.num_nodes(), {});  // the diagonal blocks
+  for (Index a = 0; a < mesh.num_nodes(); ++a) {
+    const auto kind = dofs.kind(a);
+    if (kind == fem::DofMap::NodeKind::Prescribed) continue;
+    D.add(D.find(a, a), eta * shear * std::cbrt(volume[a]) * Matrix3::Identity());
+  }
+  return std::make_unique<fem::QuadraticEnergy>("stabilization", std::move(D));
+}
+
 /// Explicit integration divides by the reduced mass M_q = Jᵀ M J: every unknown needs mass.
 void check_explicit_mass(const Model& model) {
   fem::HessianReduction reduction(*model.dofs);
@@ -98,6 +125,7 @@ void rebuild_objective(Model& model) {
   std::vector<Energy*> terms{model.elastic.get(), model.external.get()};
   if (model.contact) terms.push_back(model.contact.get());
   if (model.friction) terms.push_back(model.friction.get());
+  if (model.stabilization) terms.push_back(model.stabilization.get());
   if (model.dynamics) {
     if (model.dynamics->inertia) terms.push_back(model.dynamics->inertia.get());
     if (model.dynamics->viscosity) terms.push_back(model.dynamics->viscosity.get());
@@ -178,7 +206,10 @@ Model build_model(const scene::SceneConfig& scene) {
   model.external = std::make_unique<fem::ExternalForceEnergy>(
       fem::lumped_masses(mesh.rest, mesh.tets, mesh.region, problem.region_density), problem.gravity,
       dynamic ? fem::Amplitude{{{0.0, 1.0}}} : fem::Amplitude{}, problem.forces, mesh.num_nodes());
-  if (dynamic) model.dynamics = make_dynamics(scene.dynamics, problem, model.tet_material, *model.elastic);
+  if (dynamic)
+    model.dynamics = make_dynamics(scene.dynamics, problem, model.tet_material, *model.elastic);
+  else
+    model.stabilization = make_stabilization(problem, *model.dofs, scene.solver.stepping.stabilization);
   if (!scene.initial_state.empty()) start_from_run(model, scene.initial_state);
   if (model.contact_setup) {
     const MatrixX mu = friction_coefficients(scene.contact, model.contact_setup->body_names);

@@ -62,6 +62,10 @@ struct Model {
   int friction_max_updates = 5;
   double friction_tolerance = 0.01;
   std::optional<Dynamics> dynamics;                 ///< none for a static analysis
+  /// Static analysis: the pseudo-viscous term load stepping switches on when it is stuck, A = D
+  /// (solver::LoadSteppingOptions::stabilization, node blocks D_a I, force / length); off (scale
+  /// 0) until then. Null for dynamics, with stabilization 0, or without deformable regions.
+  std::unique_ptr<fem::QuadraticEnergy> stabilization;
   /// Nodal velocities (#V x 3, length / time) a dynamic stage with inertia starts with, taken
   /// from the dynamic run it starts from (stage_start.hpp); 0 rows: it starts at rest.
   NodalVectors start_velocity;

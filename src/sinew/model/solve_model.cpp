@@ -31,7 +31,8 @@ solver::StepperResult solve_model(Model& model, const solver::StepperCallbacks& 
   }
   const solver::StepperSnapshot* stepper = resume ? &resume->stepper : nullptr;
   if (!model.dynamics)
-    return solver::solve_static(*model.objective, model.solver, model.scales, callbacks, refinement.get(), stepper);
+    return solver::solve_static(*model.objective, model.solver, model.scales, callbacks, refinement.get(), stepper,
+                                model.stabilization.get());
   const Dynamics& d = *model.dynamics;
   solver::NewtonSetup scales = model.scales;
   scales.node_viscosity.resize(0);  // quasi-viscosity is a device of load stepping

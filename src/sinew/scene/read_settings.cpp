@@ -32,6 +32,7 @@ solver::StaticSolverOptions read_solver(const json& j, ReadErrors& errors) {
   options.stepping.easy_iterations = j.at("easy_iterations").get<int>();
   options.stepping.snap_through_after_cuts = j.at("snap_through_after_cuts").get<int>();
   options.stepping.snap_through_iterations = j.at("snap_through_iterations").get<int>();
+  options.stepping.stabilization = j.at("stabilization").get<double>();
   const json& newton = j.at("newton");
   options.newton.max_iterations = newton.at("max_iterations").get<int>();
   options.newton.residual_tolerance = newton.at("residual_tolerance").get<double>();

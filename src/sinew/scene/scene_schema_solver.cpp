@@ -42,6 +42,14 @@ SchemaNode solver_schema() {
                      .max(kMaxIterations)
                      .min(1)
                      .fallback(stepping.snap_through_iterations),
+                 number("stabilization",
+                        "when a load step fails at the smallest allowed size, go on instead of stopping, with every "
+                        "later step damped by the viscous term (1 / (2 dlambda)) sum_a D_a |x_a - x_a(step start)|^2, "
+                        "D_a = this x (smallest initial shear modulus) x (rest volume around node a)^(1/3) "
+                        "(dimensionless); the energy it dissipates is in summary.json (docs/solver.md); 0 = stop")
+                     .min(0)
+                     .max(1)
+                     .fallback(stepping.stabilization),
                  object("newton", "Newton iterations of one load step",
                         {
                             integer("max_iterations", "iterations before the step fails and is halved")

@@ -73,6 +73,14 @@ struct LoadSteppingOptions {
   /// Tangent (default): dq = -K^-1 dg/dlambda dlambda from the last factorization, measured to
   /// need 25-35 % fewer Newton iterations than the seed's two-point extrapolation on the examples.
   Predictor predictor = Predictor::Tangent;
+  /// Viscous stabilization where the stepping is stuck (docs/solver.md, "Stabilization"): when a
+  /// step fails at the smallest allowed size, the run goes on instead of stopping, with every
+  /// later step adding the pseudo-viscous term (1 / (2 dlambda)) sum_a D_a |x_a - x_a^n|², x^n the
+  /// step's start, D_a = stabilization x (smallest initial shear modulus of the deformable
+  /// regions) x (rest volume of the tets around node a)^(1/3) (force / length). The energy it
+  /// dissipates is reported; the states it reaches are equilibria up to those viscous forces.
+  /// Dimensionless; 0: stop instead.
+  double stabilization = 1e-3;
 };
 
 /// Scene names of LinearSolverOptions::Kind.

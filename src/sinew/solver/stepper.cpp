@@ -45,6 +45,7 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
   const int segments = std::max(1, static_cast<int>(std::ceil(options.end / segment_length * (1 - 1e-12))));
   double step = std::min(options.first_step, options.max_step);
   int failures_in_a_row = 0;  // attempts failed since the last converged step
+  bool stabilizing = false;   // StepScheme::start_stabilizing was called (it stays on)
   double t = 0;
   int first_segment = 1;
   StepRecord record;
@@ -64,6 +65,9 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
     result.cuts = c.cuts;
     result.snap_throughs = c.snap_throughs;
     result.refinements = c.refinements;
+    result.stabilized_steps = c.stabilized_steps;
+    result.dissipated = c.dissipated;
+    stabilizing = snapshot->scheme.stabilized;
     if (c.steps > 0) result.min_step = c.min_step;
     result.max_step = c.max_step;
     result.t = t;
@@ -159,6 +163,11 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
         record.residual = solved.residual;
         record.force_scale = solved.force_scale;
         record.energy = solved.energy;
+        record.dissipated = scheme.last_dissipation();
+        if (stabilizing) {
+          ++result.stabilized_steps;
+          result.dissipated += record.dissipated;
+        }
         result.last_state = current;
         result.t = t;
         if (callbacks.on_step) callbacks.on_step(record, current, scheme.velocity());
@@ -176,7 +185,8 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
           snapshot.segment_done = segment_done;
           snapshot.record = record;
           snapshot.counts = {result.segments_completed, result.steps, result.newton_iterations, result.cuts,
-                             result.snap_throughs, result.refinements, result.min_step, result.max_step};
+                             result.snap_throughs, result.refinements, result.min_step, result.max_step,
+                             result.stabilized_steps, result.dissipated};
           snapshot.scheme = scheme.memory(current, newton);
           snapshot.times = times_so_far();
           snapshot.linear = linear_so_far();
@@ -191,6 +201,15 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
       if (callbacks.on_cut) callbacks.on_cut(attempt, solved.failure);
       step = h / 2;
       scheme.reject(current);
+      if (step < options.min_step && !stabilizing && scheme.start_stabilizing()) {
+        // Stuck: go on stabilized (it stays on for the rest of the run), from a step that the
+        // damping may make solvable again; smaller ones follow by halving.
+        stabilizing = true;
+        failures_in_a_row = 0;
+        step = std::max(h, options.stabilized_step);
+        if (callbacks.on_stabilize) callbacks.on_stabilize(attempt, solved.failure);
+        continue;
+      }
       if (step < options.min_step) {
         result.message = scheme.step_too_small(t, h, options.min_step, solved.failure);
         result.t = t;

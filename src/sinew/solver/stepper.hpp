@@ -27,6 +27,8 @@ struct StepRecord {
   int cuts = 0;             ///< step halvings so far (whole run)
   bool snap_through = false;  ///< attempted with the snap-through Newton budget
   int refinements = 0;      ///< re-solves of this step asked by the StepRefinement (0 without one)
+  /// Energy the scheme's stabilization dissipated in this step (energy; 0 when not stabilized).
+  double dissipated = 0;
 };
 
 /// What a step scheme carries from one accepted step to the next (StepScheme::memory).
@@ -38,6 +40,8 @@ struct SchemeMemory {
   VectorX tangent;
   /// Time stepping: nodal velocities of the last accepted state (#V x 3, length / time).
   NodalVectors velocity;
+  /// Load stepping: the steps are stabilized (StepScheme::start_stabilizing was called).
+  bool stabilized = false;
 };
 
 /// Counters of a run so far (StepperResult has the same).
@@ -49,6 +53,8 @@ struct StepCounts {
   int snap_throughs = 0;
   int refinements = 0;
   double min_step = 0, max_step = 0;  ///< of the accepted steps (t units)
+  int stabilized_steps = 0;           ///< accepted steps with the scheme's stabilization
+  double dissipated = 0;              ///< energy the stabilization dissipated in them
 };
 
 /// Where a run stands after an accepted step: what it takes to continue the run exactly as it
@@ -80,6 +86,9 @@ struct StepperCallbacks {
       on_segment;
   /// A step failed and will be retried smaller.
   std::function<void(const StepRecord& step, const std::string& why)> on_cut;
+  /// The step `step` failed at the smallest allowed size and the scheme stabilizes from here on
+  /// (StepScheme::start_stabilizing); it is tried again at that size.
+  std::function<void(const StepRecord& step, const std::string& why)> on_stabilize;
   /// After every accepted step, once on_step (and on_segment, when the step ended a segment)
   /// returned: where the run stands (not called by explicit integration).
   std::function<void(const StepperSnapshot& snapshot)> on_accepted;
@@ -99,6 +108,8 @@ struct StepperResult {
   int snap_throughs = 0;        ///< steps solved with the snap-through budget
   int refinements = 0;          ///< re-solves asked by the StepRefinement in accepted steps
   double min_step = 0, max_step = 0;  ///< of the accepted steps (t units)
+  int stabilized_steps = 0;     ///< accepted steps with the scheme's stabilization
+  double dissipated = 0;        ///< energy the stabilization dissipated in them
   PhaseTimes times;
   LinearCounts linear;          ///< factorizations and linear iterations of this run
 };
@@ -125,6 +136,9 @@ struct StepperOptions {
   /// Newton iterations (see LoadSteppingOptions); 0 disables it.
   int snap_through_after_cuts = 0;
   int snap_through_iterations = 200;
+  /// The step size (t units) the stepper goes on with once the scheme stabilizes
+  /// (StepScheme::start_stabilizing), or the failed size when that is larger.
+  double stabilized_step = 0;
   Start start = Start::SolveEquilibrium;
   Growth growth_rule = Growth::AfterEasyStep;
   NewtonOptions newton;
@@ -152,6 +166,11 @@ class StepScheme {
   virtual void restore(const fem::State& current, const SchemeMemory& memory) = 0;
   /// A step from `current` failed: undo what predict() set up for the objective.
   virtual void reject(const fem::State& current) = 0;
+  /// A step failed at the smallest allowed size: switch a stabilization on for every later step
+  /// and return true, or return false when there is none (or it is on already) and the run stops.
+  virtual bool start_stabilizing() { return false; }
+  /// Energy the stabilization dissipated in the step just accepted (0 when off).
+  virtual double last_dissipation() const { return 0; }
   /// Nodal velocities of the last accepted state (#V x 3), or 0 rows.
   virtual const NodalVectors& velocity() const {
     static const NodalVectors none;
