@@ -10,6 +10,7 @@
 #include "scene/scene_test_support.hpp"
 #include "support/contact_scenes.hpp"
 #include "sinew/core/error.hpp"
+#include "sinew/mesh/tet_mesh.hpp"
 #include "sinew/model/solve_model.hpp"
 #include "sinew/scene/load_scene.hpp"
 
@@ -60,6 +61,39 @@ TEST(BuildModel, QuasiViscosityGivesEveryNodeADampingProportionalToItsElementSiz
   const Model model = build(scene);
   ASSERT_EQ(model.scales.node_viscosity.size(), model.problem->mesh.num_nodes());
   EXPECT_GT(model.scales.node_viscosity.minCoeff(), 0.0);
+}
+
+// solver.stabilization: D_a = eta mu_min (rest volume around a)^(1/3) on the nodes with unknowns,
+// 0 on the fixed plate's (their motion is given and must not count as dissipation); none at 0.
+TEST(BuildModel, TheStabilizationDampsOnlyNodesWithUnknowns) {
+  json scene = contact_scene();
+  scene["solver"]["stabilization"] = 0.01;
+  const Model model = build(scene);
+  ASSERT_TRUE(model.stabilization);
+  const BlockSparseMatrix& D = model.stabilization->matrix();
+  const auto& mesh = model.problem->mesh;
+  VectorX volume = VectorX::Zero(mesh.num_nodes());
+  for (Index t = 0; t < mesh.num_tets(); ++t)
+    for (int i = 0; i < 4; ++i) volume[mesh.tets(t, i)] += std::abs(mesh::signed_volume(mesh.rest, mesh.tets, t));
+  double shear = 1e300;
+  for (const auto& law : model.problem->region_material)
+    if (law) shear = std::min(shear, law->initial_shear_modulus());
+  int damped = 0, given = 0;
+  for (Index a = 0; a < mesh.num_nodes(); ++a) {
+    const Matrix3& block = D.values()[static_cast<std::size_t>(D.find(a, a))];
+    if (model.dofs->num_node_dofs(a) == 0) {
+      EXPECT_EQ(block.norm(), 0.0) << "node " << a;
+      ++given;
+    } else {
+      EXPECT_NEAR((block - 0.01 * shear * std::cbrt(volume[a]) * Matrix3::Identity()).norm(), 0.0, 1e-12) << "node " << a;
+      ++damped;
+    }
+  }
+  EXPECT_GT(damped, 0);
+  EXPECT_GT(given, 0);
+
+  scene["solver"]["stabilization"] = 0.0;
+  EXPECT_FALSE(build(scene).stabilization);
 }
 
 TEST(BuildModel, SetContactChangesMethodAndPenaltyWithoutRemeshingOrANewDepth) {

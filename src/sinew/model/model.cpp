@@ -20,6 +20,16 @@ namespace {
 
 using Integrator = solver::DynamicOptions::Integrator;
 
+/// Rest volume of the tets around each node (#V, volume).
+VectorX rest_volume_around_nodes(const mesh::TetMesh& mesh) {
+  VectorX volume = VectorX::Zero(mesh.num_nodes());
+  for (Index t = 0; t < mesh.num_tets(); ++t) {
+    const double v = std::abs(mesh::signed_volume(mesh.rest, mesh.tets, t));
+    for (int i = 0; i < 4; ++i) volume[mesh.tets(t, i)] += v;
+  }
+  return volume;
+}
+
 /// Length and force scales of Newton's convergence test, and the quasi-viscosity per node.
 solver::NewtonSetup newton_scales(const fem::Problem& problem, const solver::NewtonOptions& newton) {
   const auto& mesh = problem.mesh;
@@ -38,11 +48,7 @@ solver::NewtonSetup newton_scales(const fem::Problem& problem, const solver::New
   scales.reference_force = (modulus > 0 ? modulus : 1.0) * length * length;
   if (newton.quasi_viscosity > 0) {
     // D_a = eta * (volume of the tets around node a)^(1/3): proportional to the local element size.
-    VectorX volume = VectorX::Zero(mesh.num_nodes());
-    for (Index t = 0; t < mesh.num_tets(); ++t) {
-      const double v = std::abs(mesh::signed_volume(mesh.rest, mesh.tets, t));
-      for (int i = 0; i < 4; ++i) volume[mesh.tets(t, i)] += v;
-    }
+    const VectorX volume = rest_volume_around_nodes(mesh);
     scales.node_viscosity = newton.quasi_viscosity * volume.unaryExpr([](double v) { return std::cbrt(v); });
   }
   return scales;
@@ -81,8 +87,9 @@ Dynamics make_dynamics(const scene::DynamicsConfig& config, const fem::Problem& 
 }
 
 /// The static stepping's stabilization (solver::LoadSteppingOptions::stabilization): D_a = eta x
-/// mu_min x (rest volume of the tets around a)^(1/3) on every node that is not fixed or
-/// prescribed, mu_min the smallest initial shear modulus of the deformable regions. Null when
+/// mu_min x (rest volume of the tets around a)^(1/3) on every node with unknowns (0 on fixed and
+/// prescribed nodes and on members of fixed or prescribed rigid bodies: their motion is given, and
+/// would count as dissipation), mu_min the smallest initial shear modulus of the deformable regions. Null when
 /// eta = 0 or no region deforms.
 std::unique_ptr<fem::QuadraticEnergy> make_stabilization(const fem::Problem& problem, const fem::DofMap& dofs,
                                                          double eta) {
@@ -91,16 +98,11 @@ std::unique_ptr<fem::QuadraticEnergy> make_stabilization(const fem::Problem& pro
     if (law) shear = std::min(shear, law->initial_shear_modulus());
   if (!(eta > 0) || !std::isfinite(shear) || !(shear > 0)) return nullptr;
   const auto& mesh = problem.mesh;
-  VectorX volume = VectorX::Zero(mesh.num_nodes());
-  for (Index t = 0; t < mesh.num_tets(); ++t) {
-    const double v = std::abs(mesh::signed_volume(mesh.rest, mesh.tets, t));
-    for (int i = 0; i < 4; ++i) volume[mesh.tets(t, i)] += v;
-  }
+  const VectorX volume = rest_volume_around_nodes(mesh);
   BlockSparseMatrix D;
   D.set_pattern(mesh.num_nodes(), {});  // the diagonal blocks
   for (Index a = 0; a < mesh.num_nodes(); ++a) {
-    const auto kind = dofs.kind(a);
-    if (kind == fem::DofMap::NodeKind::Prescribed) continue;
+    if (dofs.num_node_dofs(a) == 0) continue;
     D.add(D.find(a, a), eta * shear * std::cbrt(volume[a]) * Matrix3::Identity());
   }
   return std::make_unique<fem::QuadraticEnergy>("stabilization", std::move(D));
