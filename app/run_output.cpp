@@ -278,6 +278,33 @@ void RunOutput::finish_summary(nlohmann::json& j, double wall_seconds, const sol
   io::write_file_atomically(directory_ + "/summary.json", j.dump(2) + "\n");
 }
 
+void RunOutput::put_counts(nlohmann::json& j, const solver::StepCounts& counts, double reached,
+                           const fem::State& last_state) const {
+  if (model_.is_dynamic()) {
+    j["time_reached"] = reached;
+    j["steps"] = counts.steps;
+    j["newton_iterations"] = counts.newton_iterations;
+    j["step_cuts"] = counts.cuts;
+    j["outputs"] = counts.segments_completed + 1;  // the start state included
+    j["min_time_step"] = counts.min_step;
+    j["max_time_step"] = counts.max_step;
+  } else {
+    j["lambda_reached"] = reached;
+    j["increments_completed"] = counts.segments_completed;
+    j["steps"] = counts.steps;
+    j["newton_iterations"] = counts.newton_iterations;
+    j["step_cuts"] = counts.cuts;
+    j["snap_throughs"] = counts.snap_throughs;
+    j["multiplier_updates"] = counts.refinements;
+    // Viscous stabilization (solver.stabilization): steps taken with it and the energy its
+    // forces dissipated, against the energy stored at the end (their ratio should stay small).
+    j["stabilized_steps"] = counts.stabilized_steps;
+    j["stabilization_dissipated_energy"] = counts.dissipated;
+    const double stored = counts.stabilized_steps > 0 ? model_.elastic->value(last_state.x) : 0.0;
+    j["stabilization_energy_ratio"] = stored > 0 ? counts.dissipated / stored : 0.0;
+  }
+}
+
 void RunOutput::write_summary(const solver::StepperResult& result, double wall_seconds, const std::string& scene_name) {
   flush_tables();
   nlohmann::json j;
@@ -285,36 +312,14 @@ void RunOutput::write_summary(const solver::StepperResult& result, double wall_s
   j["success"] = result.success;
   j["status"] = result.success ? "solved" : "stopped";
   j["message"] = result.message;
-  if (model_.is_dynamic()) {
-    j["time_reached"] = result.t;
-    j["steps"] = result.steps;
-    j["newton_iterations"] = result.newton_iterations;
-    j["step_cuts"] = result.cuts;
-    j["outputs"] = result.segments_completed + 1;  // the start state included
-    j["min_time_step"] = result.min_step;
-    j["max_time_step"] = result.max_step;
-  } else {
-    j["lambda_reached"] = result.last_state.lambda;
-    j["increments_completed"] = result.segments_completed;
-    j["steps"] = result.steps;
-    j["newton_iterations"] = result.newton_iterations;
-    j["step_cuts"] = result.cuts;
-    j["snap_throughs"] = result.snap_throughs;
-    j["multiplier_updates"] = result.refinements;
-    // Viscous stabilization (solver.stabilization): steps taken with it and the energy its
-    // forces dissipated, against the energy stored at the end (their ratio should stay small).
-    j["stabilized_steps"] = result.stabilized_steps;
-    j["stabilization_dissipated_energy"] = result.dissipated;
-    const double stored = result.stabilized_steps > 0 ? model_.elastic->value(result.last_state.x) : 0.0;
-    j["stabilization_energy_ratio"] = stored > 0 ? result.dissipated / stored : 0.0;
-  }
+  put_counts(j, solver::counts_of(result), model_.is_dynamic() ? result.t : result.last_state.lambda,
+             result.last_state);
   finish_summary(j, wall_seconds, result.times, result.linear);
 }
 
 void RunOutput::write_stopped_summary(const std::string& scene_name, const std::string& status,
-                                      const std::string& message, const std::string& reached_key, double reached,
-                                      double wall_seconds, const solver::PhaseTimes& times,
-                                      const solver::LinearCounts& linear) {
+                                      const std::string& message, double reached, double wall_seconds,
+                                      const solver::StepperSnapshot* last) {
   try {
     flush_tables();
   } catch (const Error&) {  // the summary below may still fit
@@ -324,8 +329,12 @@ void RunOutput::write_stopped_summary(const std::string& scene_name, const std::
   j["success"] = false;
   j["status"] = status;
   j["message"] = message;
-  j[reached_key] = reached;
-  finish_summary(j, wall_seconds, times, linear);
+  if (last)
+    put_counts(j, last->counts, reached, last->state);
+  else
+    j[model_.is_dynamic() ? "time_reached" : "lambda_reached"] = reached;
+  finish_summary(j, wall_seconds, last ? last->times : solver::PhaseTimes{},
+                 last ? last->linear : solver::LinearCounts{});
 }
 
 }  // namespace sinew::app

@@ -73,12 +73,12 @@ class RunOutput {
   /// summary.json of a finished run, solved or stopped (keys of a static or a dynamic analysis).
   void write_summary(const solver::StepperResult& result, double wall_seconds, const std::string& scene_name);
   /// summary.json of a run stopped by something other than the solve (`status`: "output_error",
-  /// "out_of_memory", "interrupted"), with the load parameter or time reached (`reached_key`: lambda_reached or
-  /// time_reached), and the phase times and linear-solver counts up to the last accepted step
-  /// (the time after it counts as "other"); the CSV logs are flushed first.
+  /// "out_of_memory", "interrupted"), with the load parameter or time reached (`reached`), and,
+  /// when a step was accepted (`last` not null), the counters, phase times and linear-solver
+  /// counts up to the last accepted step (the time after it counts as "other"), under the keys of
+  /// write_summary; the CSV logs are flushed first.
   void write_stopped_summary(const std::string& scene_name, const std::string& status, const std::string& message,
-                             const std::string& reached_key, double reached, double wall_seconds,
-                             const solver::PhaseTimes& times, const solver::LinearCounts& linear);
+                             double reached, double wall_seconds, const solver::StepperSnapshot* last);
 
   /// Rows written so far to each CSV table, by table ("steps", "newton", "rigid_bodies"): what a
   /// checkpoint records so a resumed run goes on from the same rows.
@@ -97,6 +97,10 @@ class RunOutput {
 
  private:
   io::VtuData vtu_data(const fem::State& state) const;
+  /// The counters of a static or dynamic run into summary.json (`reached`: lambda or time of
+  /// `last_state`, the last accepted state).
+  void put_counts(nlohmann::json& j, const solver::StepCounts& counts, double reached,
+                  const fem::State& last_state) const;
   /// Rewrites steps.csv, newton.csv and rigid_bodies.csv with every row so far.
   void flush_tables() const;
   /// Adds the mesh sizes and the time per phase to `j` and writes summary.json.

@@ -233,13 +233,11 @@ RunReport run_model(model::Model& model, const scene::OutputConfig& output_confi
   // Where the run is (lambda or time of the last accepted step), for a summary of a run that
   // stops for a failed write or for memory.
   double reached = 0;
-  const char* reached_key = model.is_dynamic() ? "time_reached" : "lambda_reached";
   auto record_stop = [&](const char* status, const std::string& message) {
     try {
       const model::RunSnapshot* last = checkpoints.latest();
-      output.write_stopped_summary(model.name, status, message, reached_key, reached, seconds_since(start),
-                                   last ? last->stepper.times : solver::PhaseTimes{},
-                                   last ? last->stepper.linear : solver::LinearCounts{});
+      output.write_stopped_summary(model.name, status, message, reached, seconds_since(start),
+                                   last ? &last->stepper : nullptr);
     } catch (...) {  // the disk may still be full: the message on standard error remains
     }
   };

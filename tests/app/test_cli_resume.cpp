@@ -232,6 +232,12 @@ TEST_F(Resume, SigintStopsADynamicRunWithItsOwnExitCodeAndACheckpointThatResumes
   EXPECT_GT(summary.at("seconds").at("forces_and_stiffness").get<double>(), 0);
   EXPECT_GT(summary.at("seconds").at("linear_solve").get<double>(), 0);
   EXPECT_GT(summary.at("factorizations").get<int>(), 0);
+  // The counters up to that step, under the keys of a finished run's summary.
+  EXPECT_GT(summary.at("steps").get<int>(), 0);
+  EXPECT_GT(summary.at("newton_iterations").get<int>(), 0);
+  EXPECT_GT(summary.at("time_reached").get<double>(), 0);
+  for (const char* key : {"step_cuts", "outputs", "min_time_step", "max_time_step"})
+    EXPECT_TRUE(summary.contains(key)) << key;
   EXPECT_TRUE(fs::exists(output / "last_converged.vtu"));
 
   const CommandResult resumed = run_sinew(arguments(output, {"--resume"}), directory);
@@ -255,9 +261,20 @@ TEST_F(Resume, SigtermAlsoEndsTheRunGracefully) {
   }
   ASSERT_TRUE(WIFEXITED(status)) << "ended by a signal";
   ASSERT_EQ(WEXITSTATUS(status), 6);
-  const std::string message = json::parse(read_text(output / "summary.json")).at("message");
+  const json summary = json::parse(read_text(output / "summary.json"));
+  const std::string message = summary.at("message");
   EXPECT_THAT(message, ::testing::AnyOf(HasSubstr("interrupted by SIGTERM at lambda = "),
                                         HasSubstr("interrupted by SIGTERM before the first step")));
+  EXPECT_TRUE(summary.contains("lambda_reached"));
+  if (message.find("at lambda = ") != std::string::npos) {
+    // A step was accepted: the counters up to it, the stabilization's included.
+    EXPECT_GT(summary.at("steps").get<int>(), 0);
+    for (const char* key : {"newton_iterations", "step_cuts", "snap_throughs", "stabilized_steps",
+                            "stabilization_dissipated_energy", "stabilization_energy_ratio"})
+      EXPECT_TRUE(summary.contains(key)) << key;
+  } else {
+    EXPECT_FALSE(summary.contains("steps"));
+  }
 }
 
 TEST_F(Resume, ACheckpointOfAnotherSceneIsRefusedAndNothingIsWritten) {

@@ -334,12 +334,16 @@ TEST(StaticSolver, StabilizationCarriesTheStepsPastALimitPointWhereTheyGetStuck)
   const solver::NewtonSetup setup{.characteristic_length = 1.0, .reference_force = 1.0};
 
   std::vector<solver::StepRecord> steps;
+  std::vector<double> potentials;             // of each accepted state, without the viscous term
   std::vector<double> equilibrium_residuals;  // of each step's last Newton iteration
   int stabilize_calls = 0;
   double stuck_at = 0;
+  solver::Objective potential(rig.dofs, std::vector<Energy*>{&rig.well}, rig.problem.mesh.num_nodes());
   solver::StepperCallbacks callbacks;
-  callbacks.on_step = [&](const solver::StepRecord& step, const fem::State&, const NodalVectors&) {
+  callbacks.on_step = [&](const solver::StepRecord& step, const fem::State& state, const NodalVectors&) {
     steps.push_back(step);
+    potential.set_load_parameter(state.lambda);
+    potentials.push_back(potential.value(state));
   };
   callbacks.on_iteration = [&](const solver::StepRecord& step, const solver::IterationRecord& it) {
     if (step.step == 0) return;  // the solve at lambda = 0
@@ -371,6 +375,8 @@ TEST(StaticSolver, StabilizationCarriesTheStepsPastALimitPointWhereTheyGetStuck)
       EXPECT_NE(equilibrium_residuals.at(i), steps[i].residual);
     }
     dissipated += steps[i].dissipated;
+    // The step's energy (steps.csv) is the potential, without the viscous term.
+    EXPECT_NEAR(steps[i].energy, potentials[i], 1e-9 * (1 + std::abs(potentials[i]))) << "step " << steps[i].step;
   }
   EXPECT_EQ(stabilized, result.stabilized_steps);
   EXPECT_NEAR(result.dissipated, dissipated, 1e-12 * dissipated);

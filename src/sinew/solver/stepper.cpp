@@ -6,6 +6,12 @@
 
 namespace sinew::solver {
 
+StepCounts counts_of(const StepperResult& result) {
+  return {result.segments_completed, result.steps,      result.newton_iterations, result.cuts,
+          result.snap_throughs,      result.refinements, result.min_step,          result.max_step,
+          result.stabilized_steps,   result.dissipated};
+}
+
 StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const StepperOptions& options,
                           const StepperCallbacks& callbacks, StepRefinement* refinement) {
   Objective& objective = newton.objective();
@@ -162,8 +168,9 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
         record.newton_iterations = iterations;
         record.residual = solved.residual;
         record.force_scale = solved.force_scale;
-        record.energy = solved.energy;
         record.dissipated = scheme.last_dissipation();
+        // The stabilization's term is part of Newton's objective; the step's energy is without it.
+        record.energy = solved.energy - 0.5 * record.dissipated;
         if (stabilizing) {
           ++result.stabilized_steps;
           result.dissipated += record.dissipated;
@@ -184,9 +191,7 @@ StepperResult run_stepper(NewtonSolver& newton, StepScheme& scheme, const Steppe
           snapshot.segment = k;
           snapshot.segment_done = segment_done;
           snapshot.record = record;
-          snapshot.counts = {result.segments_completed, result.steps, result.newton_iterations, result.cuts,
-                             result.snap_throughs, result.refinements, result.min_step, result.max_step,
-                             result.stabilized_steps, result.dissipated};
+          snapshot.counts = counts_of(result);
           snapshot.scheme = scheme.memory(current, newton);
           snapshot.times = times_so_far();
           snapshot.linear = linear_so_far();

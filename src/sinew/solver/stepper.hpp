@@ -114,6 +114,9 @@ struct StepperResult {
   LinearCounts linear;          ///< factorizations and linear iterations of this run
 };
 
+/// The counters of `result` (what a snapshot of it records).
+StepCounts counts_of(const StepperResult& result);
+
 struct StepperOptions {
   enum class Start {
     SolveEquilibrium,  ///< Newton at t = 0 first (a larger budget); no step-0 record
@@ -169,7 +172,8 @@ class StepScheme {
   /// A step failed at the smallest allowed size: switch a stabilization on for every later step
   /// and return true, or return false when there is none (or it is on already) and the run stops.
   virtual bool start_stabilizing() { return false; }
-  /// Energy the stabilization dissipated in the step just accepted (0 when off).
+  /// Energy the stabilization dissipated in the step just accepted (0 when off). Its term in
+  /// the objective, at the accepted state, is half of it (a quadratic viscous term).
   virtual double last_dissipation() const { return 0; }
   /// Nodal velocities of the last accepted state (#V x 3), or 0 rows.
   virtual const NodalVectors& velocity() const {
