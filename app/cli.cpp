@@ -9,11 +9,13 @@
 #include <iterator>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 #include <tbb/global_control.h>
 
 #include "convergence_study.hpp"
 #include "exit_codes.hpp"
 #include "interrupt.hpp"
+#include "parallel_run.hpp"
 #include "run_scene.hpp"
 #include "sinew/core/enum_names.hpp"
 #include "sinew/core/error.hpp"
@@ -21,6 +23,7 @@
 #include "sinew/io/atomic_file.hpp"
 #include "sinew/io/output_directory.hpp"
 #include "sinew/model/model.hpp"
+#include "sinew/parallel/ranks.hpp"
 #include "sinew/scene/element_size.hpp"
 #include "sinew/scene/load_scene.hpp"
 #include "sinew/scene/scene_schema.hpp"
@@ -86,33 +89,35 @@ int run_commands(int argc, char** argv);
 }  // namespace
 
 int run_cli(int argc, char** argv) {
-  // Every failure ends here as a message and a documented exit code, never as a signal.
+  // Every failure ends here as a message and a documented exit code, never as a signal. On
+  // several MPI ranks a failure of one rank alone ends them all (parallel_run.hpp).
+  auto fail = [](ExitCode exit_code, const std::string& message, bool every_rank_saw_it) {
+    log_failure(message, every_rank_saw_it);
+    end_ranks_after_failure(code(exit_code), every_rank_saw_it);
+    return code(exit_code);
+  };
   try {
+    start_ranks();
     return run_commands(argc, argv);
-  } catch (const InputError& e) {
-    logger().error("{}", e.what());
-    return code(ExitCode::InputRejected);
-  } catch (const RunInterrupted& e) {
-    logger().error("{}", e.what());
-    return code(ExitCode::Interrupted);
+  } catch (const InputError& e) {  // the same on every rank (or passed on by on_root_for_all)
+    return fail(ExitCode::InputRejected, e.what(), true);
+  } catch (const RunInterrupted& e) {  // every rank stops at the same point (run_scene.cpp)
+    return fail(ExitCode::Interrupted, e.what(), true);
   } catch (const OutputError& e) {
-    logger().error("{}", e.what());
-    return code(ExitCode::OutputFailed);
+    return fail(ExitCode::OutputFailed, e.what(), false);
   } catch (const OutOfMemoryError& e) {
-    logger().error("{}", e.what());
-    return code(ExitCode::OutOfMemory);
+    return fail(ExitCode::OutOfMemory, e.what(), false);
   } catch (const std::bad_alloc&) {
-    logger().error("out of memory (an allocation failed); try a coarser mesh or a machine with more memory");
-    return code(ExitCode::OutOfMemory);
+    return fail(ExitCode::OutOfMemory,
+                "out of memory (an allocation failed); try a coarser mesh or a machine with more memory", false);
   } catch (const Error& e) {
-    logger().error("{}", e.what());
-    return code(ExitCode::InputRejected);
+    return fail(ExitCode::InputRejected, e.what(), false);
   } catch (const std::exception& e) {
-    logger().error("internal error: {} (please report it with the scene)", e.what());
-    return code(ExitCode::InternalError);
+    return fail(ExitCode::InternalError, fmt::format("internal error: {} (please report it with the scene)", e.what()),
+                false);
   } catch (...) {
-    logger().error("internal error: an unknown exception (please report it with the scene)");
-    return code(ExitCode::InternalError);
+    return fail(ExitCode::InternalError, "internal error: an unknown exception (please report it with the scene)",
+                false);
   }
 }
 
@@ -125,7 +130,9 @@ int run_commands(int argc, char** argv) {
   cli.fallthrough();  // global options (-q, -j) may also follow the subcommand
   int threads = 0;
   bool quiet = false;
-  cli.add_option("-j,--threads", threads, "worker threads (default: all cores)")->check(CLI::Range(0, 4096));
+  cli.add_option("-j,--threads", threads,
+                 "worker threads (default: all cores; under mpirun, the cores shared among the ranks on the node)")
+      ->check(CLI::Range(0, 4096));
   cli.add_flag("-q,--quiet", quiet, "only warnings and errors");
 
   auto* run = cli.add_subcommand("run", "solve a scene and write VTU/PVD, CSV logs and a summary");
@@ -221,8 +228,9 @@ int run_commands(int argc, char** argv) {
                ? code(ExitCode::Success)
                : code(ExitCode::InputRejected);
   }
-  if (quiet) logger().set_level(spdlog::level::warn);
+  if (quiet && parallel::is_root()) logger().set_level(spdlog::level::warn);  // the other ranks stay silent
   std::unique_ptr<tbb::global_control> thread_limit;
+  if (threads == 0) threads = threads_per_rank();  // 0 (all cores) on one rank
   if (threads > 0)
     thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
 
@@ -275,13 +283,15 @@ int run_commands(int argc, char** argv) {
       if (!all_solved) logger().warn("some runs stopped before their end (see runs.csv); this is a result, not an error");
       return code(ExitCode::Success);
     }
-    run_options.progress_bar = !no_progress;
+    run_options.progress_bar = !no_progress && parallel::is_root();
     run_options.log_steps = !quiet;
     run_options.command = command_line(argc, argv);
     // The output directory is checked before any work (nothing is written until the scene has
     // passed every check).
-    io::check_output_directory(run_options.output_directory,
-                               {.overwrite = run_options.overwrite, .resume = run_options.resume});
+    on_root_for_all([&] {
+      io::check_output_directory(run_options.output_directory,
+                                 {.overwrite = run_options.overwrite, .resume = run_options.resume});
+    });
     const auto config = with_overrides(scene::load_scene_file(scene_path), overrides);
     run_options.scene_identity = scene_identity(scene_path, overrides);
     run_options.resume_command = "sinew";

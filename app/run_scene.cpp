@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "interrupt.hpp"
+#include "parallel_run.hpp"
 #include "run_checkpoints.hpp"
 #include "run_output.hpp"
 #include "sinew/core/error.hpp"
@@ -17,6 +18,7 @@
 #include "sinew/io/output_directory.hpp"
 #include "sinew/io/progress.hpp"
 #include "sinew/model/solve_model.hpp"
+#include "sinew/parallel/ranks.hpp"
 
 namespace sinew::app {
 
@@ -56,8 +58,11 @@ std::string phase_split(const solver::PhaseTimes& t, double setup_seconds, doubl
 /// The callbacks that write the outputs and the log of a run, static or dynamic.
 /// Throws RunInterrupted when SIGINT or SIGTERM came (the caller writes the checkpoint).
 void stop_if_interrupted() {
-  if (const int signal = InterruptGuard::pending())
-    throw RunInterrupted(InterruptGuard::name(signal));
+  // On several ranks every rank stops at the same point (the signal may reach them at different
+  // moments): the largest signal number pending on any rank.
+  const int local = InterruptGuard::pending();
+  const int signal = parallel::size() > 1 ? static_cast<int>(parallel::max(local)) : local;
+  if (signal) throw RunInterrupted(InterruptGuard::name(signal));
 }
 
 solver::StepperCallbacks output_callbacks(const model::Model& model, RunOutput& output, io::ProgressBar& bar,
@@ -106,6 +111,7 @@ solver::StepperCallbacks output_callbacks(const model::Model& model, RunOutput& 
       output.write_increment(k, increments, state);
   };
   callbacks.on_accepted = [&checkpoints](const solver::StepperSnapshot& snapshot) {
+    check_ranks_agree(snapshot.state, snapshot.t, snapshot.counts.steps);
     checkpoints.on_accepted(snapshot);
     stop_if_interrupted();
   };
@@ -218,8 +224,12 @@ RunReport run_model(model::Model& model, const scene::OutputConfig& output_confi
   if (!model.started_from.empty())
     logger().info("starting from the end of the run in {}{}", model.started_from,
                   model.start_velocity.rows() > 0 ? " (its positions and velocities)" : " (its positions)");
-  const io::OutputDirectoryLock lock(options.output_directory,
-                                    {.overwrite = options.overwrite, .resume = resume_from != nullptr}, options.command);
+  std::optional<io::OutputDirectoryLock> lock;  // rank 0's; the other ranks write nothing
+  on_root_for_all([&] {
+    lock.emplace(options.output_directory, io::OutputDirectoryOptions{.overwrite = options.overwrite,
+                                                                      .resume = resume_from != nullptr},
+                 options.command);
+  });
   RunOutput output(options.output_directory, model, output_config);
   output.set_setup_seconds(setup_seconds);
   if (resume_from) {

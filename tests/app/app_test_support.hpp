@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <cstdlib>
@@ -15,6 +16,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -54,13 +56,17 @@ struct CommandResult {
 };
 
 /// Runs SINEW_BINARY with `arguments` (each quoted), standard output and error captured in
-/// files of `directory`, and returns the exit code and both texts.
-inline CommandResult run_sinew(const std::vector<std::string>& arguments, const TempDir& directory) {
+/// files of `directory`, and returns the exit code and both texts. `launcher`: words put before
+/// the program (such as mpirun and its options), each quoted.
+inline CommandResult run_sinew(const std::vector<std::string>& arguments, const TempDir& directory,
+                               const std::vector<std::string>& launcher = {}) {
   static std::atomic<int> counter{0};
   const int n = counter++;
   const fs::path out_file = directory / ("stdout_" + std::to_string(n) + ".txt");
   const fs::path err_file = directory / ("stderr_" + std::to_string(n) + ".txt");
-  std::string command = shell_quote(SINEW_BINARY);
+  std::string command;
+  for (const auto& word : launcher) command += shell_quote(word) + " ";
+  command += shell_quote(SINEW_BINARY);
   for (const auto& argument : arguments) command += " " + shell_quote(argument);
   command += " >" + shell_quote(out_file.string()) + " 2>" + shell_quote(err_file.string()) + " </dev/null";
   const int status = std::system(command.c_str());
@@ -100,6 +106,42 @@ inline json small_block_scene() {
     "output": {"vtu": true, "every": 1}
   })");
 }
+
+/// The CSV table at `path`: its lines split at commas (header first).
+inline std::vector<std::vector<std::string>> read_csv_cells(const fs::path& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(read_text(path));
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::istringstream fields(line);
+    std::string cell;
+    while (std::getline(fields, cell, ',')) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+/// A 48 kB tmpfs mounted on `path` while the object lives (a full disk for the tests of write
+/// failures). mounted() is false where mounting is not allowed (not root, a sandbox): skip then.
+class SmallTmpfs {
+ public:
+  explicit SmallTmpfs(fs::path path) : path_(std::move(path)) {
+    fs::create_directories(path_);
+    const std::string mount = "mount -t tmpfs -o size=48k tmpfs " + shell_quote(path_.string()) + " 2>/dev/null";
+    mounted_ = ::geteuid() == 0 && std::system(mount.c_str()) == 0;
+  }
+  ~SmallTmpfs() {
+    if (mounted_) std::system(("umount " + shell_quote(path_.string()) + " 2>/dev/null").c_str());
+  }
+  SmallTmpfs(const SmallTmpfs&) = delete;
+  SmallTmpfs& operator=(const SmallTmpfs&) = delete;
+  bool mounted() const { return mounted_; }
+
+ private:
+  fs::path path_;
+  bool mounted_ = false;
+};
 
 /// Every regular file under `directory`, recursively, relative to it.
 inline std::vector<std::string> files_under(const fs::path& directory) {

@@ -128,13 +128,8 @@ TEST_F(OutputDirectory, LogsAreWrittenEvenWhenNoStepConverges) {
 // summary.json saying where the run stopped when there is room for it. Needs a small tmpfs
 // (root in a sandbox that allows mounts); skipped elsewhere.
 TEST_F(OutputDirectory, AFullDiskMidRunIsItsOwnExitCode) {
-  fs::create_directories(output);
-  const std::string mount = "mount -t tmpfs -o size=48k tmpfs " + shell_quote(output.string()) + " 2>/dev/null";
-  if (::geteuid() != 0 || std::system(mount.c_str()) != 0) GTEST_SKIP() << "cannot mount a small tmpfs here";
-  struct Unmount {
-    fs::path path;
-    ~Unmount() { std::system(("umount " + shell_quote(path.string()) + " 2>/dev/null").c_str()); }
-  } unmount{output};
+  const SmallTmpfs disk(output);
+  if (!disk.mounted()) GTEST_SKIP() << "cannot mount a small tmpfs here";
   json scene = small_block_scene();
   scene["bodies"][0]["mesh"]["generate"]["element_size"] = 1.5;  // VTUs larger than the disk
   scene["solver"]["increments"] = 4;

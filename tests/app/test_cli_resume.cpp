@@ -79,20 +79,7 @@ int run_and_signal(const std::vector<std::string>& arguments, const TempDir& dir
 /// exactly); same rows.
 void expect_same_csv(const fs::path& expected, const fs::path& actual, double relative) {
   SCOPED_TRACE(actual.string());
-  auto rows = [](const fs::path& path) {
-    std::vector<std::vector<std::string>> out;
-    std::istringstream in(read_text(path));
-    std::string line;
-    while (std::getline(in, line)) {
-      std::vector<std::string> cells;
-      std::istringstream fields(line);
-      std::string cell;
-      while (std::getline(fields, cell, ',')) cells.push_back(cell);
-      out.push_back(cells);
-    }
-    return out;
-  };
-  const auto a = rows(expected), b = rows(actual);
+  const auto a = read_csv_cells(expected), b = read_csv_cells(actual);
   ASSERT_EQ(a.size(), b.size());
   ASSERT_FALSE(a.empty());
   EXPECT_EQ(a.front(), b.front());

@@ -72,6 +72,30 @@ TEST_P(ContactEnergyMethods, ExactHessianMatchesDifferencesOfTheGradient) {
   EXPECT_LT(st::relative_error(e.hessian, e.hessian.transpose()), 1e-12);
 }
 
+TEST_P(ContactEnergyMethods, SharesOfThePairsSumToTheWholeEnergy) {
+  // What the ranks of a run on several processes evaluate (docs/mpi.md): each a contiguous share
+  // of the pair list; their values, gradients and Hessians add up to the whole term's.
+  const auto boxes = st::two_boxes(2, Vector3(0.6, 0.3, 0.2), 0.3, 5.0);
+  ContactEnergy whole(boxes.geometry, {GetParam(), PairHessian::Exact});
+  const Evaluated all = evaluate(whole, boxes.x);
+  ASSERT_GT(whole.active_pairs().size(), 20u);
+  for (int parts : {2, 3, 7}) {
+    Evaluated sum{0, NodalVectors::Zero(boxes.x.rows(), 3), MatrixX::Zero(all.hessian.rows(), all.hessian.cols())};
+    for (int part = 0; part < parts; ++part) {
+      ContactEnergy share(boxes.geometry, {GetParam(), PairHessian::Exact});
+      share.set_share(part, parts);
+      const Evaluated e = evaluate(share, boxes.x);
+      EXPECT_LT(e.value, all.value) << "part " << part << " of " << parts << " holds every pair";
+      sum.value += e.value;
+      sum.gradient += e.gradient;
+      sum.hessian += e.hessian;
+    }
+    EXPECT_NEAR(sum.value, all.value, 1e-12 * all.value) << parts << " parts";
+    EXPECT_LT((sum.gradient - all.gradient).norm(), 1e-12 * all.gradient.norm()) << parts << " parts";
+    EXPECT_LT((sum.hessian - all.hessian).norm(), 1e-12 * all.hessian.norm()) << parts << " parts";
+  }
+}
+
 TEST_P(ContactEnergyMethods, GaussNewtonHessianIsPositiveSemiDefinite) {
   const auto boxes = st::two_boxes(2, Vector3(0.58, 0.27, 0.21), 0.25, 3.0);
   ContactEnergy energy(boxes.geometry, {GetParam(), PairHessian::GaussNewton});

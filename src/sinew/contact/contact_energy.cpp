@@ -13,15 +13,16 @@
 
 namespace sinew::contact {
 
-double contact_energy_value(const CollisionSet& collisions, const Positions& x) {
+double contact_energy_value(const CollisionSet& collisions, const Positions& x, ItemRange which) {
   if (collisions.overflowed()) return std::numeric_limits<double>::infinity();
   const auto& pairs = collisions.pairs();
   const PairIntegrator& integrator = collisions.integrator();
-  std::vector<double> values(pairs.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 64), [&](const auto& range) {
+  const std::size_t first = std::min(which.begin, pairs.size()), last = std::min(which.end, pairs.size());
+  std::vector<double> values(last - first);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 64), [&](const auto& range) {
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
       const ActivePair& p = pairs[k];
-      values[k] = 0.5 * p.penalty * integrator.integral(collisions.pair_geometry_at(x, p), p.support);
+      values[k - first] = 0.5 * p.penalty * integrator.integral(collisions.pair_geometry_at(x, p), p.support);
     }
   });
   return std::accumulate(values.begin(), values.end(), 0.0);
@@ -51,9 +52,13 @@ bool ContactEnergy::is_valid(const Positions& x) const {
   return !collisions_.overflowed();
 }
 
+ItemRange ContactEnergy::pair_share() const {
+  return share_of(collisions_.pairs().size(), share_part_, share_parts_);
+}
+
 double ContactEnergy::value(const Positions& x) const {
   require_current(x);
-  return contact_energy_value(collisions_, x);
+  return contact_energy_value(collisions_, x, pair_share());
 }
 
 void ContactEnergy::add_gradient(const Positions& x, NodalVectors& grad) const {
@@ -63,15 +68,16 @@ void ContactEnergy::add_gradient(const Positions& x, NodalVectors& grad) const {
                             "overlap far beyond what contact can resolve",
                             collisions_.times().candidates));
   const auto& pairs = collisions_.pairs();
-  std::vector<PairVector> gradients(pairs.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 64), [&](const auto& range) {
+  const ItemRange mine = pair_share();
+  std::vector<PairVector> gradients(mine.end - mine.begin);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.begin, mine.end, 64), [&](const auto& range) {
     for (std::size_t k = range.begin(); k != range.end(); ++k)
-      gradients[k] = pair_energy_gradient(collisions_, pairs[k], x);
+      gradients[k - mine.begin] = pair_energy_gradient(collisions_, pairs[k], x);
   });
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
+  for (std::size_t k = mine.begin; k < mine.end; ++k) {
     const auto nodes = collisions_.nodes(pairs[k]);
     for (std::size_t i = 0; i < nodes.size(); ++i)
-      grad.row(nodes[i]) += gradients[k].segment<3>(3 * static_cast<Index>(i)).transpose();
+      grad.row(nodes[i]) += gradients[k - mine.begin].segment<3>(3 * static_cast<Index>(i)).transpose();
   }
 }
 
@@ -86,10 +92,11 @@ void ContactEnergy::add_hessian(const Positions& x, BlockSparseMatrix& H) const 
   // In chunks: pair Hessians and their block indices in parallel, then a serial scatter (which
   // is cheap), so memory stays bounded by the chunk.
   constexpr std::size_t kChunk = 2048;
-  std::vector<PairMatrix> hessians(std::min(kChunk, pairs.size()));
+  const ItemRange mine = pair_share();
+  std::vector<PairMatrix> hessians(std::min(kChunk, mine.end - mine.begin));
   std::vector<std::array<Index, 49>> blocks(hessians.size());
-  for (std::size_t begin = 0; begin < pairs.size(); begin += kChunk) {
-    const std::size_t end = std::min(pairs.size(), begin + kChunk);
+  for (std::size_t begin = mine.begin; begin < mine.end; begin += kChunk) {
+    const std::size_t end = std::min(mine.end, begin + kChunk);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 16), [&](const auto& range) {
       PairVector gradient;
       for (std::size_t k = range.begin(); k != range.end(); ++k) {

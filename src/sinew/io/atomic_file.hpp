@@ -12,4 +12,10 @@ namespace sinew::io {
 /// sinew::OutputError naming the path on any failure (the target is then left as it was).
 void write_file_atomically(const std::string& path, std::string_view content);
 
+/// Whether this process writes files (default true). A run on several MPI ranks writes from
+/// rank 0 only: the other ranks switch writing off, and then write_file_atomically,
+/// check_output_directory and OutputDirectoryLock do nothing (docs/mpi.md).
+void set_files_written(bool written);
+bool files_written();
+
 }  // namespace sinew::io

@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "sinew/core/error.hpp"
+#include "sinew/io/atomic_file.hpp"
 
 namespace sinew::io {
 
@@ -113,6 +114,7 @@ void check_output_directory(const std::string& path, const OutputDirectoryOption
   if (path.find('\0') != std::string::npos) throw InputError("the output directory's name contains a NUL byte");
   if (options.resume && options.overwrite)
     throw InputError("--resume continues the run in the output directory, --overwrite replaces it: give one of them");
+  if (!files_written()) return;  // an MPI rank other than 0: rank 0 checks (docs/mpi.md)
   const fs::path directory(path);
   std::error_code ec;
   const auto status = fs::status(directory, ec);
@@ -142,6 +144,7 @@ void check_output_directory(const std::string& path, const OutputDirectoryOption
 OutputDirectoryLock::OutputDirectoryLock(const std::string& path, const OutputDirectoryOptions& options,
                                          const std::string& command) {
   check_output_directory(path, options);
+  if (!files_written()) return;  // no lock: this process writes nothing
   const fs::path directory(path);
   std::error_code ec;
   fs::create_directories(directory, ec);

@@ -13,6 +13,7 @@
 #include "sinew/fem/stable_time_step.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
 #include "sinew/model/stage_start.hpp"
+#include "sinew/parallel/ranks.hpp"
 #include "sinew/scene/build_problem.hpp"
 
 namespace sinew::model {
@@ -132,7 +133,34 @@ void rebuild_objective(Model& model) {
     if (model.dynamics->inertia) terms.push_back(model.dynamics->inertia.get());
     if (model.dynamics->viscosity) terms.push_back(model.dynamics->viscosity.get());
   }
-  model.objective = std::make_unique<solver::Objective>(*model.dofs, std::move(terms), model.problem->mesh.num_nodes());
+  model.objective = std::make_unique<solver::Objective>(*model.dofs, terms, model.problem->mesh.num_nodes());
+  if (parallel::size() > 1) {
+    // Several ranks (docs/mpi.md): each evaluates its share of the tets and of the contact pairs;
+    // the other terms are rank 0's.
+    std::vector<Energy*> shares(terms.size(), nullptr);
+    shares[0] = model.elastic_share.get();  // terms[0] is the elastic energy
+    if (model.contact) {
+      model.contact->set_share(parallel::rank(), parallel::size());
+      shares[2] = model.contact.get();  // terms[2]: its own share
+    }
+    model.objective->share_terms(std::move(shares));
+  }
+}
+
+/// On several ranks: this rank's share of the elastic energy, a contiguous range of the
+/// deformable tets (docs/mpi.md); null on one rank.
+std::unique_ptr<fem::ElasticEnergy> make_elastic_share(const mesh::TetMesh& mesh,
+                                                       const std::vector<material::MaterialPtr>& tet_material,
+                                                       const fem::ElasticEnergyOptions& options) {
+  if (parallel::size() <= 1) return nullptr;
+  std::vector<Index> deformable;
+  for (std::size_t t = 0; t < tet_material.size(); ++t)
+    if (tet_material[t]) deformable.push_back(static_cast<Index>(t));
+  const ItemRange mine = parallel::my_share(deformable.size());
+  std::vector<material::MaterialPtr> share(tet_material.size());
+  for (std::size_t k = mine.begin; k < mine.end; ++k)
+    share[static_cast<std::size_t>(deformable[k])] = tet_material[static_cast<std::size_t>(deformable[k])];
+  return std::make_unique<fem::ElasticEnergy>(mesh.rest, mesh.tets, std::move(share), options);
 }
 
 /// The friction coefficient of every pair of contact bodies: the pair's own or the scene's.
@@ -200,9 +228,9 @@ Model build_model(const scene::SceneConfig& scene) {
   for (Index t = 0; t < mesh.num_tets(); ++t) model.tet_material[t] = problem.region_material[mesh.region[t]];
   for (const auto& [t, law] : problem.element_material) model.tet_material[static_cast<std::size_t>(t)] = law;
   model.dofs = std::make_unique<fem::DofMap>(problem);
-  model.elastic = std::make_unique<fem::ElasticEnergy>(
-      mesh.rest, mesh.tets, model.tet_material,
-      fem::ElasticEnergyOptions{.project_hessians = scene.solver.newton.project_element_hessians});
+  const fem::ElasticEnergyOptions elastic_options{.project_hessians = scene.solver.newton.project_element_hessians};
+  model.elastic = std::make_unique<fem::ElasticEnergy>(mesh.rest, mesh.tets, model.tet_material, elastic_options);
+  model.elastic_share = make_elastic_share(mesh, model.tet_material, elastic_options);
   const bool dynamic = scene.dynamics.enabled;
   // Dynamics: gravity and loads act in full from t = 0.
   model.external = std::make_unique<fem::ExternalForceEnergy>(

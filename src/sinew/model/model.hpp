@@ -44,6 +44,10 @@ struct Model {
   std::unique_ptr<fem::DofMap> dofs;
   std::vector<material::MaterialPtr> tet_material;  ///< #T, nullptr for rigid tets
   std::unique_ptr<fem::ElasticEnergy> elastic;
+  /// On several MPI ranks: this rank's share of `elastic` (its part of the tets), which the
+  /// objective evaluates instead (docs/mpi.md); null on one rank. `elastic` stays whole for
+  /// the outputs.
+  std::unique_ptr<fem::ElasticEnergy> elastic_share;
   std::unique_ptr<fem::ExternalForceEnergy> external;
   /// The scene's contact input (depths, penalties, body names), kept so that set_contact
   /// changes the method and penalties without re-meshing or recomputing the depth; none

@@ -5,13 +5,37 @@
 #include <cmath>
 #include <limits>
 
+#include "sinew/core/error.hpp"
+#include "sinew/parallel/ranks.hpp"
+
 namespace sinew::solver {
 
 Objective::Objective(const fem::DofMap& dofs, std::vector<Energy*> terms, Index num_nodes)
     : dofs_(dofs), reduction_(dofs), terms_(std::move(terms)), num_nodes_(num_nodes) {}
 
+void Objective::share_terms(std::vector<Energy*> shares) {
+  if (shares.size() != terms_.size())
+    throw Error("Objective::share_terms: one share (or null) per term is needed");
+  shares_ = std::move(shares);
+  pattern_ready_ = false;  // the shares bind to the pattern too
+}
+
+std::vector<Energy*> Objective::separate_shares() const {
+  std::vector<Energy*> separate;
+  for (std::size_t i = 0; i < shares_.size(); ++i)
+    if (shares_[i] && shares_[i] != terms_[i]) separate.push_back(shares_[i]);
+  return separate;
+}
+
+Energy* Objective::evaluated(std::size_t i) const {
+  if (shares_.empty()) return terms_[i];
+  if (shares_[i]) return shares_[i];
+  return parallel::is_root() ? terms_[i] : nullptr;
+}
+
 void Objective::set_load_parameter(double lambda) {
   for (auto* term : terms_) term->set_load_parameter(lambda);
+  for (auto* share : separate_shares()) share->set_load_parameter(lambda);
 }
 
 namespace {
@@ -26,17 +50,20 @@ void Objective::update_terms(const fem::State& state) {
   if (!state.x.allFinite()) return;
   const auto start = std::chrono::steady_clock::now();
   for (auto* term : terms_) term->update(state.x);
+  for (auto* share : separate_shares()) share->update(state.x);
   collision_seconds_ += seconds_since(start);
 }
 
 void Objective::set_time_step(double h) {
   for (auto* term : terms_) term->set_time_step(h);
+  for (auto* share : separate_shares()) share->set_time_step(h);
 }
 
 void Objective::begin_step(const fem::State& state) {
   if (!state.x.allFinite()) return;
   const auto start = std::chrono::steady_clock::now();
   for (auto* term : terms_) term->begin_step(state.x);
+  for (auto* share : separate_shares()) share->begin_step(state.x);
   collision_seconds_ += seconds_since(start);
 }
 
@@ -47,17 +74,23 @@ std::uint64_t Objective::pattern_revisions() const {
 }
 
 bool Objective::is_valid(const fem::State& state) {
-  if (!state.x.allFinite()) return false;
+  if (!state.x.allFinite()) return false;  // the same on every rank: x is
   update_terms(state);
-  for (auto* term : terms_)
-    if (!term->is_valid(state.x)) return false;
-  return true;
+  bool valid = true;
+  for (std::size_t i = 0; i < terms_.size() && valid; ++i) {
+    // A shared term is checked by its shares (each rank its own elements); the others everywhere.
+    Energy* term = shares_.empty() || !shares_[i] ? terms_[i] : shares_[i];
+    valid = term->is_valid(state.x);
+  }
+  return shares_.empty() ? valid : parallel::all(valid);
 }
 
 double Objective::value(const fem::State& state) {
   if (!is_valid(state)) return std::numeric_limits<double>::infinity();
   double sum = 0;
-  for (auto* term : terms_) sum += term->value(state.x);
+  for (std::size_t i = 0; i < terms_.size(); ++i)
+    if (Energy* term = evaluated(i)) sum += term->value(state.x);
+  if (!shares_.empty()) sum = parallel::sum(sum);  // a NaN on any rank stays NaN
   return std::isnan(sum) ? std::numeric_limits<double>::infinity() : sum;
 }
 
@@ -65,14 +98,18 @@ NodalVectors Objective::full_gradient(const fem::State& state, double* force_sca
   NodalVectors g = NodalVectors::Zero(num_nodes_, 3);
   update_terms(state);
   if (!force_scale) {
-    for (auto* term : terms_) term->add_gradient(state.x, g);
+    for (std::size_t i = 0; i < terms_.size(); ++i)
+      if (Energy* term = evaluated(i)) term->add_gradient(state.x, g);
+    if (!shares_.empty()) parallel::sum(g.data(), static_cast<std::size_t>(g.size()));
     return g;
   }
   *force_scale = 0;
   NodalVectors term_gradient(num_nodes_, 3);
-  for (auto* term : terms_) {
+  for (std::size_t i = 0; i < terms_.size(); ++i) {
     term_gradient.setZero();
-    term->add_gradient(state.x, term_gradient);
+    if (Energy* term = evaluated(i)) term->add_gradient(state.x, term_gradient);
+    // Each term's norm is that of its whole gradient, summed over the ranks.
+    if (!shares_.empty()) parallel::sum(term_gradient.data(), static_cast<std::size_t>(term_gradient.size()));
     *force_scale = std::max(*force_scale, term_gradient.norm());
     g += term_gradient;
   }
@@ -84,6 +121,7 @@ void Objective::rebuild_pattern() {
   for (auto* term : terms_) term->hessian_pattern(pairs);
   H_.set_pattern(num_nodes_, std::move(pairs));
   for (auto* term : terms_) term->bind_pattern(H_);
+  for (auto* share : separate_shares()) share->bind_pattern(H_);
   reduction_.bind(H_);
   pattern_ready_ = true;
   pattern_revision_ = pattern_revisions();
@@ -98,8 +136,14 @@ bool Objective::hessian(const fem::State& state, const NodalVectors& full_gradie
     fresh = true;
   }
   H_.set_zero();
-  for (auto* term : terms_)
-    if (term->has_hessian()) term->add_hessian(state.x, H_);
+  for (std::size_t i = 0; i < terms_.size(); ++i) {
+    Energy* term = evaluated(i);
+    if (term && term->has_hessian()) term->add_hessian(state.x, H_);
+  }
+  // Every rank gets the whole full-space Hessian (the same pattern everywhere: the terms give
+  // it), then reduces it to the same K.
+  if (!shares_.empty())
+    parallel::sum(H_.values().empty() ? nullptr : H_.values().front().data(), 9 * H_.values().size());
   const auto nnz_before = K.nonZeros();
   const auto rows_before = K.rows();
   reduction_.reduce(state, H_, full_gradient, node_viscosity, K);

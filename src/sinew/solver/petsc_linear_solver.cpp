@@ -3,6 +3,7 @@
 #include <petscksp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <mutex>
 #include <vector>
@@ -13,6 +14,7 @@
 #endif
 
 #include "sinew/core/error.hpp"
+#include "sinew/parallel/ranks.hpp"
 
 namespace sinew::solver {
 namespace {
@@ -32,6 +34,7 @@ void check(PetscErrorCode code, const char* call) {
 void ensure_petsc() {
   static std::once_flag once;
   std::call_once(once, [] {
+    parallel::start();  // MPI first when mpirun started several ranks: PETSc then runs on all of them
     PetscBool initialized = PETSC_FALSE;
     PetscInitialized(&initialized);
     if (initialized) return;
@@ -75,14 +78,6 @@ using KspHandle = Handle<KSP, KSPDestroy>;
 using VecHandle = Handle<Vec, VecDestroy>;
 using NullSpaceHandle = Handle<MatNullSpace, MatNullSpaceDestroy>;
 
-/// A sequential PETSc vector viewing an Eigen vector's storage (no copy; PETSc writes into it
-/// when it is a solution).
-void wrap(const VectorX& v, VecHandle& out) {
-  out.reset();
-  check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, static_cast<PetscInt>(v.size()), v.data(), &*out),
-        "VecCreateSeqWithArray");
-}
-
 class PetscSolver final : public LinearSolver {
  public:
   explicit PetscSolver(const LinearSolverOptions& options)
@@ -99,17 +94,33 @@ class PetscSolver final : public LinearSolver {
     const auto n = static_cast<PetscInt>(K.rows());
     std::vector<PetscInt> starts(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
     std::vector<PetscInt> columns(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
-    check(MatCreate(PETSC_COMM_SELF, &*A_), "MatCreate");
-    check(MatSetSizes(A_.get(), n, n, n, n), "MatSetSizes");
-    check(MatSetType(A_.get(), MATSEQAIJ), "MatSetType");
-    if (block_size_ > 1 && n % block_size_ == 0) check(MatSetBlockSize(A_.get(), block_size_), "MatSetBlockSize");
-    check(MatSeqAIJSetPreallocationCSR(A_.get(), starts.data(), columns.data(), nullptr), "MatSeqAIJSetPreallocationCSR");
+    const bool blocked = block_size_ > 1 && n % block_size_ == 0;
+    // On several ranks each owns a contiguous range of rows (whole blocks of 3 when blocked): K is
+    // the same on every rank (docs/mpi.md), each gives PETSc its own rows.
+    const auto unit = static_cast<std::size_t>(blocked ? block_size_ : 1);
+    const ItemRange blocks = parallel::my_share(static_cast<std::size_t>(n) / unit);
+    first_row_ = static_cast<PetscInt>(blocks.begin * unit);
+    local_rows_ = static_cast<PetscInt>((blocks.end - blocks.begin) * unit);
+    check(MatCreate(communicator(), &*A_), "MatCreate");
+    check(MatSetSizes(A_.get(), local_rows_, local_rows_, n, n), "MatSetSizes");
+    check(MatSetType(A_.get(), distributed() ? MATMPIAIJ : MATSEQAIJ), "MatSetType");
+    if (blocked) check(MatSetBlockSize(A_.get(), block_size_), "MatSetBlockSize");
+    if (distributed()) {
+      std::vector<PetscInt> local_starts(static_cast<std::size_t>(local_rows_) + 1);
+      for (PetscInt r = 0; r <= local_rows_; ++r)
+        local_starts[static_cast<std::size_t>(r)] = starts[static_cast<std::size_t>(first_row_ + r)] - starts[static_cast<std::size_t>(first_row_)];
+      check(MatMPIAIJSetPreallocationCSR(A_.get(), local_starts.data(),
+                                         columns.data() + starts[static_cast<std::size_t>(first_row_)], nullptr),
+            "MatMPIAIJSetPreallocationCSR");
+    } else {
+      check(MatSeqAIJSetPreallocationCSR(A_.get(), starts.data(), columns.data(), nullptr), "MatSeqAIJSetPreallocationCSR");
+    }
     check(MatSetOption(A_.get(), MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption(MAT_SYMMETRIC)");
     check(MatSetOption(A_.get(), MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "MatSetOption(MAT_SYMMETRY_ETERNAL)");
     check(MatSetOption(A_.get(), MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE), "MatSetOption");
     starts_ = std::move(starts);
     columns_ = std::move(columns);
-    check(KSPCreate(PETSC_COMM_SELF, &*ksp_), "KSPCreate");
+    check(KSPCreate(communicator(), &*ksp_), "KSPCreate");
     PC pc = nullptr;
     check(KSPGetPC(ksp_.get(), &pc), "KSPGetPC");
     if (gamg_) {
@@ -128,16 +139,28 @@ class PetscSolver final : public LinearSolver {
       check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
       check(MatMumpsSetIcntl(F, 24, 1), "MatMumpsSetIcntl(24)");  // detect null pivots (the inertia's zeros)
       check(MatMumpsSetIcntl(F, 14, 50), "MatMumpsSetIcntl(14)");  // 50 % workspace headroom
+      // The inertia of a distributed factorization needs the root node factorized on one rank
+      // (PETSc's MatGetInertia for MUMPS).
+      if (distributed()) check(MatMumpsSetIcntl(F, 13, 1), "MatMumpsSetIcntl(13)");
     }
     check(KSPSetFromOptions(ksp_.get()), "KSPSetFromOptions");  // PETSC_OPTIONS may tune either
   }
 
   bool factorize(const SparseMatrix& K) override {
     if (!A_.get() || !same_pattern(K)) analyze(K);
-    PetscScalar* values = nullptr;
-    check(MatSeqAIJGetArray(A_.get(), &values), "MatSeqAIJGetArray");
-    std::copy(K.valuePtr(), K.valuePtr() + K.nonZeros(), values);
-    check(MatSeqAIJRestoreArray(A_.get(), &values), "MatSeqAIJRestoreArray");
+    if (distributed()) {
+      for (PetscInt row = first_row_; row < first_row_ + local_rows_; ++row) {
+        const auto begin = starts_[static_cast<std::size_t>(row)], end = starts_[static_cast<std::size_t>(row) + 1];
+        check(MatSetValues(A_.get(), 1, &row, end - begin, columns_.data() + begin, K.valuePtr() + begin,
+                           INSERT_VALUES),
+              "MatSetValues");
+      }
+    } else {
+      PetscScalar* values = nullptr;
+      check(MatSeqAIJGetArray(A_.get(), &values), "MatSeqAIJGetArray");
+      std::copy(K.valuePtr(), K.valuePtr() + K.nonZeros(), values);
+      check(MatSeqAIJRestoreArray(A_.get(), &values), "MatSeqAIJRestoreArray");
+    }
     check(MatAssemblyBegin(A_.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
     check(MatAssemblyEnd(A_.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
     if (gamg_ && modes_.cols() > 0 && modes_.rows() == K.rows()) {
@@ -145,15 +168,15 @@ class PetscSolver final : public LinearSolver {
       std::vector<Vec> raw;
       for (Index c = 0; c < modes_.cols(); ++c) {
         auto& v = vectors[static_cast<std::size_t>(c)];
-        check(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(K.rows()), &*v), "VecCreateSeq");
+        check(VecCreateMPI(communicator(), local_rows_, static_cast<PetscInt>(K.rows()), &*v), "VecCreateMPI");
         PetscScalar* data = nullptr;
         check(VecGetArray(v.get(), &data), "VecGetArray");
-        std::copy(modes_.col(c).data(), modes_.col(c).data() + K.rows(), data);
+        std::copy(modes_.col(c).data() + first_row_, modes_.col(c).data() + first_row_ + local_rows_, data);
         check(VecRestoreArray(v.get(), &data), "VecRestoreArray");
         raw.push_back(v.get());
       }
       NullSpaceHandle space;
-      check(MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, static_cast<PetscInt>(raw.size()), raw.data(), &*space),
+      check(MatNullSpaceCreate(communicator(), PETSC_FALSE, static_cast<PetscInt>(raw.size()), raw.data(), &*space),
             "MatNullSpaceCreate");
       check(MatSetNearNullSpace(A_.get(), space.get()), "MatSetNearNullSpace");
     }
@@ -181,13 +204,15 @@ class PetscSolver final : public LinearSolver {
     LinearSolveStats stats;
     x = VectorX::Zero(b.size());
     VecHandle pb, px;
-    wrap(b, pb);
-    wrap(x, px);
+    wrap_local(b, pb);
+    wrap_local(x, px);
     check(KSPSolve(ksp_.get(), pb.get(), px.get()), "KSPSolve");
     KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
     check(KSPGetConvergedReason(ksp_.get(), &reason), "KSPGetConvergedReason");
     PetscInt iterations = 0;
     check(KSPGetIterationNumber(ksp_.get(), &iterations), "KSPGetIterationNumber");
+    // Each rank solved for its own rows (the rest of x is 0 there): every rank gets all of x.
+    if (distributed()) parallel::sum(x.data(), static_cast<std::size_t>(x.size()));
     stats.iterations = gamg_ ? static_cast<int>(iterations) : 0;
     stats.relative_residual = relative_residual(x, b);
     // CG meeting negative curvature (an indefinite tangent) or stopping short: the caller shifts.
@@ -220,13 +245,32 @@ class PetscSolver final : public LinearSolver {
 
   /// |A x - b| / |b| with PETSc's matrix (the one factorized; the caller's K may be gone).
   double relative_residual(const VectorX& x, const VectorX& b) const {
-    VectorX Ax(b.size());
+    VectorX Ax = VectorX::Zero(b.size());
     VecHandle px, pAx;
-    wrap(x, px);
-    wrap(Ax, pAx);
+    wrap_local(x, px);
+    wrap_local(Ax, pAx);
     check(MatMult(A_.get(), px.get(), pAx.get()), "MatMult");
-    const double nb = b.norm();
-    return nb > 0 ? (Ax - b).norm() / nb : Ax.norm();
+    const auto rows = Eigen::seqN(first_row_, local_rows_);
+    double squares[2] = {(Ax(rows) - b(rows)).squaredNorm(), b(rows).squaredNorm()};
+    if (distributed()) parallel::sum(squares, 2);
+    const double nb = std::sqrt(squares[1]);
+    return nb > 0 ? std::sqrt(squares[0]) / nb : std::sqrt(squares[0]);
+  }
+
+  /// The ranks share the matrix (a run on several MPI ranks, docs/mpi.md).
+  static bool distributed() { return parallel::size() > 1; }
+  static MPI_Comm communicator() { return distributed() ? PETSC_COMM_WORLD : PETSC_COMM_SELF; }
+
+  /// A PETSc vector viewing this rank's rows of an Eigen vector of all rows (no copy; PETSc
+  /// writes into it when it is a solution).
+  void wrap_local(const VectorX& v, VecHandle& out) const {
+    out.reset();
+    const auto n = static_cast<PetscInt>(v.size());
+    if (distributed())
+      check(VecCreateMPIWithArray(communicator(), 1, local_rows_, n, v.data() + first_row_, &*out),
+            "VecCreateMPIWithArray");
+    else
+      check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, v.data(), &*out), "VecCreateSeqWithArray");
   }
 
   bool gamg_;
@@ -236,6 +280,8 @@ class PetscSolver final : public LinearSolver {
   MatrixX modes_;
   MatHandle A_;
   KspHandle ksp_;
+  PetscInt first_row_ = 0;         ///< this rank's rows of the matrix: [first_row_, first_row_ + local_rows_)
+  PetscInt local_rows_ = 0;
   std::vector<PetscInt> starts_;   ///< the analyzed pattern's column starts
   std::vector<PetscInt> columns_;  ///< and row indices (compressed columns of the symmetric K)
   int factorizations_ = 0;

@@ -1,0 +1,122 @@
+#include "parallel_run.hpp"
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <thread>
+#include <exception>
+#include <new>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "sinew/core/error.hpp"
+#include "sinew/core/log.hpp"
+#include "sinew/io/atomic_file.hpp"
+#include "sinew/parallel/ranks.hpp"
+
+namespace sinew::app {
+
+namespace {
+
+/// The kinds of failure on_root_for_all passes from rank 0 to the others.
+enum class FailureKind : int { None = 0, Input = 1, Output = 2, Memory = 3, Other = 4 };
+
+}  // namespace
+
+void start_ranks() {
+  parallel::start();
+  if (parallel::size() > 1) {
+    // OpenBLAS's own setter when it is the BLAS this process loaded (Debian's alternatives may
+    // give another, which then keeps its setting).
+    using SetThreads = void (*)(int);
+    if (auto* set_threads = reinterpret_cast<SetThreads>(::dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+      set_threads(1);
+  }
+  if (parallel::is_root()) return;
+  logger().set_level(spdlog::level::off);
+  io::set_files_written(false);
+  // What a command prints (schema, a validation's report) comes once, from rank 0.
+  if (!std::freopen("/dev/null", "w", stdout)) logger().debug("standard output stays open");
+}
+
+int threads_per_rank() {
+  if (parallel::size() <= 1) return 0;
+  int ranks_here = 0;
+  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS", "MPICH_LOCALNRANKS"}) {
+    if (const char* text = std::getenv(name)) {
+      ranks_here = std::atoi(text);
+      if (ranks_here > 0) break;
+    }
+  }
+  if (ranks_here <= 0) ranks_here = parallel::size();  // unknown: as if all were on this node
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return std::max(1, cores / ranks_here);
+}
+
+void on_root_for_all(const std::function<void()>& step) {
+  if (parallel::size() <= 1) {
+    step();
+    return;
+  }
+  FailureKind kind = FailureKind::None;
+  std::string message;
+  std::exception_ptr failure;
+  if (parallel::is_root()) {
+    try {
+      step();
+    } catch (const InputError& e) {
+      kind = FailureKind::Input, message = e.what(), failure = std::current_exception();
+    } catch (const OutputError& e) {
+      kind = FailureKind::Output, message = e.what(), failure = std::current_exception();
+    } catch (const OutOfMemoryError& e) {
+      kind = FailureKind::Memory, message = e.what(), failure = std::current_exception();
+    } catch (const std::bad_alloc&) {
+      kind = FailureKind::Memory, message = "out of memory", failure = std::current_exception();
+    } catch (const std::exception& e) {
+      kind = FailureKind::Other, message = e.what(), failure = std::current_exception();
+    }
+  }
+  kind = static_cast<FailureKind>(parallel::broadcast(static_cast<int>(kind)));
+  if (kind == FailureKind::None) return;
+  message = parallel::broadcast(message);
+  if (failure) std::rethrow_exception(failure);
+  switch (kind) {
+    case FailureKind::Input: throw InputError(message);
+    case FailureKind::Output: throw OutputError(message);
+    case FailureKind::Memory: throw OutOfMemoryError(message);
+    default: throw Error(message);
+  }
+}
+
+void check_ranks_agree(const fem::State& state, double t, int step) {
+  if (parallel::size() <= 1) return;
+  // Position-weighted so that a permutation of the same values does not pass.
+  double checksum = t;
+  for (Index a = 0; a < state.x.rows(); ++a) checksum += static_cast<double>(a % 97 + 1) * state.x.row(a).sum();
+  const double highest = parallel::max(checksum), lowest = -parallel::max(-checksum);
+  if (highest != lowest)
+    throw Error(fmt::format("the MPI ranks' states differ after step {} (checksums {:.17g} and {:.17g}): every rank "
+                            "must compute the same run; please report it with the scene and the number of ranks",
+                            step, lowest, highest));
+}
+
+void log_failure(const std::string& message, bool every_rank_saw_it) {
+  if (parallel::is_root()) {
+    logger().error("{}", message);
+  } else if (!every_rank_saw_it) {
+    // The other ranks' logger is off: this rank's own failure goes to standard error.
+    fmt::print(stderr, "[error] rank {} of {}: {}\n", parallel::rank(), parallel::size(), message);
+  }
+}
+
+void end_ranks_after_failure(int exit_code, bool every_rank_saw_it) {
+  if (parallel::size() > 1 && !every_rank_saw_it) {
+    std::fflush(stderr);
+    parallel::abort_all(exit_code);
+  }
+}
+
+}  // namespace sinew::app
