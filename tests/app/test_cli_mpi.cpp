@@ -23,7 +23,22 @@ using ::testing::HasSubstr;
 
 /// mpirun with N ranks, allowed as root and on more ranks than cores (N = 4 on 2 cores).
 std::vector<std::string> mpirun(int ranks) {
-  return {"mpirun", "--allow-run-as-root", "--oversubscribe", "-n", std::to_string(ranks)};
+  std::vector<std::string> words;
+#ifdef SINEW_SANITIZER_BUILD
+  // OpenMPI's PMIx progress thread leaves 32 bytes in a plugin it unloads at MPI_Finalize: a leak
+  // LeakSanitizer cannot attribute (an unknown module) and so cannot suppress. The ranks run
+  // without leak checking; the code they run is leak-checked in the one-process tests.
+  words = {"env", "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1"};
+#endif
+  for (const char* word : {"mpirun", "--allow-run-as-root", "--oversubscribe", "-n"}) words.emplace_back(word);
+  words.push_back(std::to_string(ranks));
+  return words;
+}
+
+/// `launcher` run under `timeout 120` (exit code 124 if it hangs).
+std::vector<std::string> with_timeout(std::vector<std::string> launcher) {
+  launcher.insert(launcher.begin(), {"timeout", "120"});
+  return launcher;
 }
 
 bool have_mpirun() { return std::system("command -v mpirun >/dev/null 2>&1") == 0; }
@@ -80,6 +95,9 @@ class Mpi : public ::testing::Test {
     ASSERT_EQ(one.exit_code, 0) << one.err;
     const json reference = json::parse(read_text(serial / "summary.json"));
     for (const int n : ranks) {
+#ifdef SINEW_SANITIZER_BUILD
+      if (n != *ranks.begin()) continue;  // the sanitizer build, four times slower, tries the first count
+#endif
       SCOPED_TRACE(std::to_string(n) + " ranks");
       const fs::path output = base / ("ranks" + std::to_string(n));
       const CommandResult many = run_sinew(
@@ -187,8 +205,7 @@ TEST_F(Mpi, AWriteThatFailsOnRankZeroEndsEveryRankWithItsExitCode) {
   const fs::path scene_path = directory / "block.json";
   write_text(scene_path, scene.dump(2));
   const CommandResult result = run_sinew({"run", scene_path.string(), "-o", output.string(), "--no-progress"},
-                                         directory, {"timeout", "120", "mpirun", "--allow-run-as-root",
-                                                     "--oversubscribe", "-n", "2"});
+                                         directory, with_timeout(mpirun(2)));
   EXPECT_EQ(result.exit_code, 3) << result.err;  // not 124: timeout did not have to stop a hang
   EXPECT_THAT(result.err, HasSubstr("cannot write file"));
 }
