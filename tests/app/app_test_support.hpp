@@ -55,18 +55,18 @@ struct CommandResult {
   std::string err;  ///< standard error
 };
 
-/// Runs SINEW_BINARY with `arguments` (each quoted), standard output and error captured in
-/// files of `directory`, and returns the exit code and both texts. `launcher`: words put before
-/// the program (such as mpirun and its options), each quoted.
-inline CommandResult run_sinew(const std::vector<std::string>& arguments, const TempDir& directory,
-                               const std::vector<std::string>& launcher = {}) {
+/// Runs `program` with `arguments` (each quoted), standard output and error captured in files of
+/// `directory`, and returns the exit code and both texts. `launcher`: words put before the
+/// program (such as mpirun and its options), each quoted.
+inline CommandResult run_program(const std::string& program, const std::vector<std::string>& arguments,
+                                 const TempDir& directory, const std::vector<std::string>& launcher = {}) {
   static std::atomic<int> counter{0};
   const int n = counter++;
   const fs::path out_file = directory / ("stdout_" + std::to_string(n) + ".txt");
   const fs::path err_file = directory / ("stderr_" + std::to_string(n) + ".txt");
   std::string command;
   for (const auto& word : launcher) command += shell_quote(word) + " ";
-  command += shell_quote(SINEW_BINARY);
+  command += shell_quote(program);
   for (const auto& argument : arguments) command += " " + shell_quote(argument);
   command += " >" + shell_quote(out_file.string()) + " 2>" + shell_quote(err_file.string()) + " </dev/null";
   const int status = std::system(command.c_str());
@@ -75,6 +75,12 @@ inline CommandResult run_sinew(const std::vector<std::string>& arguments, const 
   result.out = read_text(out_file);
   result.err = read_text(err_file);
   return result;
+}
+
+/// run_program on SINEW_BINARY, the command under test.
+inline CommandResult run_sinew(const std::vector<std::string>& arguments, const TempDir& directory,
+                               const std::vector<std::string>& launcher = {}) {
+  return run_program(SINEW_BINARY, arguments, directory, launcher);
 }
 
 /// `sinew run <scene> -o <output> --no-progress`.

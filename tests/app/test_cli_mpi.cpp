@@ -4,17 +4,28 @@
 /// energies and penetrations equal to round-off. Rank 0 alone writes; a failure ends every rank.
 /// Skipped where mpirun is missing.
 
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include "parallel_run.hpp"
 #include "app_test_support.hpp"
+#include "sinew/core/error.hpp"
+#include "sinew/parallel/ranks.hpp"
 
 namespace sinew::app_test {
 namespace {
@@ -75,6 +86,36 @@ void expect_same_table(const fs::path& expected, const fs::path& actual, double 
           << "row " << i + 1 << ", column " << column << ": " << values[i].first << " against "
           << values[i].second;
   }
+}
+
+/// Starts `launcher` + sinew + `arguments` (output to `log`), waits until `ready` exists, sends
+/// `signal` to the launcher and returns its wait status (-1 if it could not start, or if it
+/// ended before `ready` appeared: then the signal was never sent).
+int run_and_signal(const std::vector<std::string>& launcher, const std::vector<std::string>& arguments,
+                   const fs::path& log, const fs::path& ready, int signal) {
+  std::vector<std::string> words = launcher;
+  words.emplace_back(SINEW_BINARY);
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return -1;
+  int status = 0;
+  while (!fs::exists(ready)) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return -1;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  kill(pid, signal);
+  waitpid(pid, &status, 0);
+  return status;
 }
 
 class Mpi : public ::testing::Test {
@@ -208,6 +249,98 @@ TEST_F(Mpi, AWriteThatFailsOnRankZeroEndsEveryRankWithItsExitCode) {
                                          directory, with_timeout(mpirun(2)));
   EXPECT_EQ(result.exit_code, 3) << result.err;  // not 124: timeout did not have to stop a hang
   EXPECT_THAT(result.err, HasSubstr("cannot write file"));
+}
+
+TEST_F(Mpi, CtrlCStopsEveryRankWithACheckpointThatResumesOnRanks) {
+  // mpirun passes Ctrl-C on to the ranks as SIGTERM; the ranks agree on it after a Newton
+  // iteration and rank 0 writes the checkpoint and the summary before they end.
+  // mpirun passes the signal on about a second late (OpenMPI 4.1): the example runs 0.4 s of
+  // motion (400 steps, about 5 s of computing) instead of 0.1 s, so that it is still stepping then.
+  json scene = example("block-on-incline");
+  scene["dynamics"]["end_time"] = 0.4;
+  const fs::path scene_path = directory / "incline.json";
+  write_text(scene_path, scene.dump(2));
+  const auto arguments = [&](const fs::path& output) {
+    return std::vector<std::string>{"run", scene_path.string(), "-o", output.string(), "--no-progress", "-j", "1"};
+  };
+  const fs::path serial = directory / "serial";
+  const CommandResult one = run_sinew(arguments(serial), directory);
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+
+  const fs::path output = directory / "interrupted";
+  const int status =
+      run_and_signal(mpirun(2), arguments(output), directory / "interrupted.log", output / "checkpoint.cbor", SIGINT);
+  ASSERT_NE(status, -1) << "the run ended before its first checkpoint: " << read_text(directory / "interrupted.log");
+  ASSERT_TRUE(WIFEXITED(status)) << "mpirun ended by a signal";
+  EXPECT_NE(WEXITSTATUS(status), 0);  // mpirun's own code for a job it was told to stop (1 with OpenMPI)
+  const json summary = json::parse(read_text(output / "summary.json"));
+  EXPECT_EQ(summary.at("status"), "interrupted");
+  EXPECT_THAT(summary.at("message").get<std::string>(), HasSubstr("--resume"));
+  EXPECT_GT(summary.at("steps").get<int>(), 0);
+
+  const CommandResult resumed = run_sinew([&] {
+    auto words = arguments(output);
+    words.emplace_back("--resume");
+    return words;
+  }(), directory, with_timeout(mpirun(2)));
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_THAT(resumed.err, HasSubstr("resuming after step"));
+  expect_same_table(serial / "steps.csv", output / "steps.csv", 1e-6);
+  expect_same_table(serial / "rigid_bodies.csv", output / "rigid_bodies.csv", 1e-6);
+}
+
+// The rank helpers of app/parallel_run.hpp on real ranks: this test program runs itself under
+// mpirun with the filter RanksUnderMpirun.* (Mpi.TheRankHelpersWorkUnderMpirun below); run
+// without mpirun these tests skip.
+
+TEST(RanksUnderMpirun, StatesThatDifferBetweenRanksStopTheRunWithAClearError) {
+  if (parallel::launched_size() <= 1) GTEST_SKIP() << "runs under mpirun (Mpi.TheRankHelpersWorkUnderMpirun)";
+  parallel::start();
+  ASSERT_GT(parallel::size(), 1);
+  fem::State state;
+  state.x = Positions::Ones(5, 3);
+  state.lambda = 0.5;
+  EXPECT_NO_THROW(app::check_ranks_agree(state, 0.5, 3));
+  if (parallel::rank() == 1) state.x(2, 1) += 1e-9;  // one rank's state drifts
+  try {
+    app::check_ranks_agree(state, 0.5, 4);
+    ADD_FAILURE() << "rank " << parallel::rank() << ": differing states passed";
+  } catch (const Error& error) {
+    EXPECT_THAT(error.what(), HasSubstr("the MPI ranks' states differ after step 4"));
+    EXPECT_THAT(error.what(), HasSubstr("please report it"));
+  }
+  // A different load parameter alone also counts.
+  state.x = Positions::Ones(5, 3);
+  EXPECT_THROW(app::check_ranks_agree(state, parallel::rank() == 0 ? 0.5 : 0.75, 5), Error);
+}
+
+TEST(RanksUnderMpirun, AFailureOnRankZeroIsThrownOnEveryRankWithItsKindAndMessage) {
+  if (parallel::launched_size() <= 1) GTEST_SKIP() << "runs under mpirun (Mpi.TheRankHelpersWorkUnderMpirun)";
+  parallel::start();
+  bool ran = false;
+  EXPECT_NO_THROW(app::on_root_for_all([&] { ran = true; }));
+  EXPECT_EQ(ran, parallel::is_root());  // the step runs on rank 0 alone
+  try {
+    app::on_root_for_all([] { throw OutputError("cannot write file 'x': disk full"); });
+    ADD_FAILURE() << "rank " << parallel::rank() << ": no exception";
+  } catch (const OutputError& error) {  // the same kind on every rank, not just Error
+    EXPECT_STREQ(error.what(), "cannot write file 'x': disk full");
+  }
+  EXPECT_THROW(app::on_root_for_all([] { throw InputError("bad scene"); }), InputError);
+}
+
+TEST_F(Mpi, TheRankHelpersWorkUnderMpirun) {
+  // This test program itself on 2 ranks, running only the RanksUnderMpirun tests above.
+  const CommandResult result = run_program(fs::read_symlink("/proc/self/exe").string(), {"--gtest_filter=RanksUnderMpirun.*", "--gtest_color=no"}, directory,
+                                           with_timeout(mpirun(2)));
+  EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
+  // Each of the 2 ranks ran both tests and none skipped.
+  std::size_t passed = 0;
+  for (std::size_t at = result.out.find("[  PASSED  ] 2 tests"); at != std::string::npos;
+       at = result.out.find("[  PASSED  ] 2 tests", at + 1))
+    ++passed;
+  EXPECT_EQ(passed, 2u) << result.out;
+  EXPECT_EQ(result.out.find("SKIPPED"), std::string::npos) << result.out;
 }
 
 }  // namespace

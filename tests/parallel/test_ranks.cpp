@@ -41,7 +41,7 @@ TEST(Ranks, AProcessStartedAloneIsOneRankAndEveryCollectiveReturnsItsArgument) {
   SUCCEED();
 }
 
-TEST(Ranks, TheLauncherSizeComesFromTheEnvironmentAndNonsenseCountsAsOne) {
+TEST(Ranks, TheLauncherSizeComesFromTheLaunchersEnvironmentAndNonsenseCountsAsOne) {
   // The launchers' variables, set aside for the test and put back after it.
   const char* names[] = {"OMPI_COMM_WORLD_SIZE", "PMIX_SIZE", "PMI_SIZE", "MPI_LOCALNRANKS", "SLURM_NTASKS"};
   std::vector<std::pair<std::string, std::string>> saved;
@@ -57,8 +57,13 @@ TEST(Ranks, TheLauncherSizeComesFromTheEnvironmentAndNonsenseCountsAsOne) {
   ::setenv("OMPI_COMM_WORLD_SIZE", "-2", 1);
   EXPECT_EQ(launched_size(), 1);
   ::unsetenv("OMPI_COMM_WORLD_SIZE");
-  ::setenv("SLURM_NTASKS", "8", 1);
+  ::setenv("PMIX_SIZE", "8", 1);  // srun with its PMIx plugin
   EXPECT_EQ(launched_size(), 8);
+  ::unsetenv("PMIX_SIZE");
+  // A Slurm batch script has SLURM_NTASKS for its whole allocation, also where it starts one
+  // plain process: that is no launch.
+  ::setenv("SLURM_NTASKS", "8", 1);
+  EXPECT_EQ(launched_size(), 1);
   ::unsetenv("SLURM_NTASKS");
   for (const auto& [name, value] : saved) ::setenv(name.c_str(), value.c_str(), 1);
 }

@@ -137,11 +137,11 @@ void rebuild_objective(Model& model) {
   if (parallel::size() > 1) {
     // Several ranks (docs/mpi.md): each evaluates its share of the tets and of the contact pairs;
     // the other terms are rank 0's.
+    if (model.contact) model.contact->set_share(parallel::rank(), parallel::size());
     std::vector<Energy*> shares(terms.size(), nullptr);
-    shares[0] = model.elastic_share.get();  // terms[0] is the elastic energy
-    if (model.contact) {
-      model.contact->set_share(parallel::rank(), parallel::size());
-      shares[2] = model.contact.get();  // terms[2]: its own share
+    for (std::size_t i = 0; i < terms.size(); ++i) {
+      if (terms[i] == model.elastic.get()) shares[i] = model.elastic_share.get();
+      if (model.contact && terms[i] == model.contact.get()) shares[i] = model.contact.get();  // its own share
     }
     model.objective->share_terms(std::move(shares));
   }

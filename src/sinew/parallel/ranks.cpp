@@ -43,7 +43,7 @@ int environment_int(const char* name) {
 }  // namespace
 
 int launched_size() {
-  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_SIZE", "PMI_SIZE", "MPI_LOCALNRANKS", "SLURM_NTASKS"})
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_SIZE", "PMI_SIZE", "MPI_LOCALNRANKS"})
     if (const int n = environment_int(name)) return n;
   return 1;
 }

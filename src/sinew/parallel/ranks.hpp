@@ -23,8 +23,9 @@ int rank();
 int size();
 /// True when this process is rank 0, the one that writes outputs and logs.
 inline bool is_root() { return rank() == 0; }
-/// The number of processes the launcher reports through its environment (OpenMPI, MPICH, PMIx,
-/// Slurm's srun), 1 when none: what start() goes by.
+/// The number of processes the launcher reports through its environment (OpenMPI, MPICH, PMIx;
+/// Slurm's srun through its PMI plugin), 1 when none: what start() goes by. Not SLURM_NTASKS,
+/// which a batch script also has where it starts one plain process.
 int launched_size();
 
 /// In place, on every rank: values[i] = the sum over ranks of values[i] (n doubles).
