@@ -203,14 +203,16 @@ SchemaNode body_schema() {
                      array("depth_nodes",
                            "measure depth from the boundary faces whose three nodes are all chosen by one of these "
                            "selectors (e.g. a plane: only the face that touches; symmetry planes and free sides then "
-                           "do not count)",
+                           "do not count); a plane chooses only faces that lie in it (normal within 30 degrees of "
+                           "the plane's)",
                            ref("", "a node selector (its \"body\" is this body)", "node_selector"))
                          .items(1),
                      array("exclude_faces",
                            "boundary faces whose three nodes are all chosen by one of these selectors are not a "
                            "surface of the real object, e.g. where the model was cut by a plane: they take no part in "
                            "contact (no contact integral over them) and are not zero-depth surface; the tets behind "
-                           "them can still be penetrated (docs/contact.md)",
+                           "them can still be penetrated; a plane chooses only faces that lie in it (normal within 30 "
+                           "degrees of the plane's), not the side walls that meet it (docs/contact.md)",
                            ref("", "a node selector (its \"body\" is this body)", "node_selector"))
                          .items(1),
                      string("depth_file",
