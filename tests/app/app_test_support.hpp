@@ -4,11 +4,15 @@
 /// its standard output and error captured to files in a TempDir, and a small valid scene to
 /// break in one place per test.
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +20,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -23,6 +28,8 @@
 
 #include "support/files.hpp"
 #include "support/temp_dir.hpp"
+
+extern char** environ;
 
 namespace sinew::app_test {
 
@@ -81,6 +88,60 @@ inline CommandResult run_program(const std::string& program, const std::vector<s
 inline CommandResult run_sinew(const std::vector<std::string>& arguments, const TempDir& directory,
                                const std::vector<std::string>& launcher = {}) {
   return run_program(SINEW_BINARY, arguments, directory, launcher);
+}
+
+/// When run_and_signal signals the run it started.
+struct SignalPlan {
+  int signal = SIGINT;
+  /// Waited for first, unless empty: a file the run writes once it is where the signal should
+  /// find it (a checkpoint, the output directory's lock).
+  fs::path ready;
+  std::chrono::milliseconds delay{0};  ///< then waited, counted from when `ready` exists
+};
+
+struct SignalledRun {
+  int status = -1;         ///< wait status (-1: could not start)
+  bool signalled = false;  ///< false when the run ended before the signal was sent
+  fs::path log;            ///< its standard output and error
+};
+
+/// Starts `launcher` + SINEW_BINARY + `arguments` (standard output and error to a new file in
+/// `directory`, standard input /dev/null), sends the signal as `plan` says unless the run ended
+/// before, and waits for it. A launcher such as mpirun gets the signal and passes it on.
+inline SignalledRun run_and_signal(const std::vector<std::string>& arguments, const TempDir& directory,
+                                   const SignalPlan& plan, const std::vector<std::string>& launcher = {}) {
+  static std::atomic<int> counter{0};
+  SignalledRun run;
+  run.log = directory / ("signalled_" + std::to_string(counter++) + ".txt");
+  std::vector<std::string> words = launcher;
+  words.emplace_back(SINEW_BINARY);
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, run.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return run;
+  auto ended = [&] { return waitpid(pid, &run.status, WNOHANG) == pid; };
+  while (!plan.ready.empty() && !fs::exists(plan.ready)) {
+    if (ended()) return run;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  const auto until = std::chrono::steady_clock::now() + plan.delay;
+  while (std::chrono::steady_clock::now() < until) {
+    if (ended()) return run;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  kill(pid, plan.signal);
+  run.signalled = true;
+  waitpid(pid, &run.status, 0);
+  return run;
 }
 
 /// `sinew run <scene> -o <output> --no-progress`.

@@ -4,22 +4,13 @@
 /// energies and penetrations equal to round-off. Rank 0 alone writes; a failure ends every rank.
 /// Skipped where mpirun is missing.
 
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <cstdlib>
-#include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "parallel_run.hpp"
@@ -32,36 +23,6 @@ namespace sinew::app_test {
 namespace {
 
 using ::testing::HasSubstr;
-
-/// Starts `launcher` + sinew + `arguments` (output to `log`), waits until `ready` exists, sends
-/// `signal` to the launcher and returns its wait status (-1 if it could not start, or if it
-/// ended before `ready` appeared: then the signal was never sent).
-int run_and_signal(const std::vector<std::string>& launcher, const std::vector<std::string>& arguments,
-                   const fs::path& log, const fs::path& ready, int signal) {
-  std::vector<std::string> words = launcher;
-  words.emplace_back(SINEW_BINARY);
-  words.insert(words.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (std::string& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return -1;
-  int status = 0;
-  while (!fs::exists(ready)) {
-    if (waitpid(pid, &status, WNOHANG) == pid) return -1;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  kill(pid, signal);
-  waitpid(pid, &status, 0);
-  return status;
-}
 
 TEST_F(Mpi, ARigidBallPressedIntoABlockSolvesAsOnOneProcess) {
   // Contact, a rigid body, symmetry planes; CHOLMOD on every rank.
@@ -155,9 +116,10 @@ TEST_F(Mpi, CtrlCStopsEveryRankWithACheckpointThatResumesOnRanks) {
   ASSERT_EQ(one.exit_code, 0) << one.err;
 
   const fs::path output = directory / "interrupted";
-  const int status =
-      run_and_signal(mpirun(2), arguments(output), directory / "interrupted.log", output / "checkpoint.cbor", SIGINT);
-  ASSERT_NE(status, -1) << "the run ended before its first checkpoint: " << read_text(directory / "interrupted.log");
+  const SignalledRun interrupted = run_and_signal(
+      arguments(output), directory, SignalPlan{.signal = SIGINT, .ready = output / "checkpoint.cbor"}, mpirun(2));
+  ASSERT_TRUE(interrupted.signalled) << "the run ended before its first checkpoint: " << read_text(interrupted.log);
+  const int status = interrupted.status;
   ASSERT_TRUE(WIFEXITED(status)) << "mpirun ended by a signal";
   EXPECT_NE(WEXITSTATUS(status), 0);  // mpirun's own code for a job it was told to stop (1 with OpenMPI)
   const json summary = json::parse(read_text(output / "summary.json"));

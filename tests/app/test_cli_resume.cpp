@@ -5,12 +5,6 @@
 /// with exit code 6, a checkpoint and a message that says how to go on; a checkpoint of another
 /// scene, a damaged one or none is refused with a clear message before anything is written.
 
-#include <fcntl.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -24,8 +18,6 @@
 
 #include "app/app_test_support.hpp"
 
-extern char** environ;
-
 namespace sinew::app_test {
 namespace {
 
@@ -36,44 +28,6 @@ constexpr int kKills = 3;  // the instrumented build is several times slower
 #else
 constexpr int kKills = 10;
 #endif
-
-/// Starts SINEW_BINARY with `arguments` (output to files in `directory`), sends `signal` after
-/// `delay` unless it ended before, and returns its wait status. With `ready`, the delay counts
-/// from when that file exists (a run's lock file: it has stopped meshing and started the run).
-int run_and_signal(const std::vector<std::string>& arguments, const TempDir& directory, std::chrono::milliseconds delay,
-                   int signal, const fs::path& ready = {}) {
-  static int counter = 0;
-  const std::string log = (directory / ("spawn_" + std::to_string(counter++) + ".txt")).string();
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  std::vector<std::string> words{SINEW_BINARY};
-  words.insert(words.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (std::string& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, SINEW_BINARY, &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return -1;
-  int status = 0;
-  if (!ready.empty()) {
-    while (!fs::exists(ready)) {
-      if (waitpid(pid, &status, WNOHANG) == pid) return status;
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-  }
-  const auto until = std::chrono::steady_clock::now() + delay;
-  while (std::chrono::steady_clock::now() < until) {
-    if (waitpid(pid, &status, WNOHANG) == pid) return status;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  kill(pid, signal);
-  waitpid(pid, &status, 0);
-  return status;
-}
 
 /// Every numeric cell of two CSV files agrees to `relative` (or 1e-10 absolute; text cells
 /// exactly); same rows.
@@ -164,7 +118,10 @@ TEST_F(Resume, ARunKilledAtRandomMomentsAndResumedEachTimeEndsAsAnUninterruptedO
     else if (fs::exists(output))
       extra.push_back("--overwrite");  // killed before its first checkpoint: start again
     resumed += has_checkpoint ? 1 : 0;
-    const int status = run_and_signal(arguments(output, extra), directory, std::chrono::milliseconds(moment(random)), SIGKILL);
+    const int status =
+        run_and_signal(arguments(output, extra), directory,
+                       SignalPlan{.signal = SIGKILL, .delay = std::chrono::milliseconds(moment(random))})
+            .status;
     if (WIFSIGNALED(status)) {
       ++killed;
     } else {
@@ -205,8 +162,10 @@ TEST_F(Resume, SigintStopsADynamicRunWithItsOwnExitCodeAndACheckpointThatResumes
   int status = 0;
   for (int delay_ms : {30, 10, 60, 0}) {
     fs::remove_all(output);
-    status = run_and_signal(arguments(output), directory, std::chrono::milliseconds(delay_ms), SIGINT,
-                            output / "checkpoint.cbor");
+    status = run_and_signal(arguments(output), directory,
+                            SignalPlan{.signal = SIGINT, .ready = output / "checkpoint.cbor",
+                                       .delay = std::chrono::milliseconds(delay_ms)})
+                 .status;
     if (WIFEXITED(status) && WEXITSTATUS(status) == 6 && fs::exists(output / "checkpoint.cbor")) break;
   }
   ASSERT_TRUE(WIFEXITED(status)) << "ended by a signal";
@@ -242,8 +201,10 @@ TEST_F(Resume, SigtermAlsoEndsTheRunGracefully) {
   // After the run has taken its output directory (its handlers are installed a moment later).
   for (int delay_ms : {100, 50, 200, 20}) {
     fs::remove_all(output);
-    status = run_and_signal(arguments(output), directory, std::chrono::milliseconds(delay_ms), SIGTERM,
-                            output / ".sinew.lock");
+    status = run_and_signal(arguments(output), directory,
+                            SignalPlan{.signal = SIGTERM, .ready = output / ".sinew.lock",
+                                       .delay = std::chrono::milliseconds(delay_ms)})
+                 .status;
     if (WIFEXITED(status) && WEXITSTATUS(status) == 6) break;
   }
   ASSERT_TRUE(WIFEXITED(status)) << "ended by a signal";
