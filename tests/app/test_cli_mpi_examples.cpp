@@ -55,9 +55,12 @@ void keep(json&) {}
 INSTANTIATE_TEST_SUITE_P(
     Every, MpiExamples,
     ::testing::Values(
-        ExampleCase{.name = "uniaxial-mooney-rivlin", .shorten = keep, .in_sanitizer_build = true}, ExampleCase{.name = "compressed-block", .shorten = keep, .in_sanitizer_build = true},
-        ExampleCase{.name = "cantilever-gravity", .shorten = keep, .in_sanitizer_build = true}, ExampleCase{.name = "corner-wedge", .shorten = keep},
-        ExampleCase{.name = "sheared-blocks", .shorten = keep}, ExampleCase{.name = "pinched-tube", .shorten = keep},
+        ExampleCase{.name = "uniaxial-mooney-rivlin", .shorten = keep, .in_sanitizer_build = true},
+        ExampleCase{.name = "compressed-block", .shorten = keep, .in_sanitizer_build = true},
+        ExampleCase{.name = "cantilever-gravity", .shorten = keep, .in_sanitizer_build = true},
+        ExampleCase{.name = "corner-wedge", .shorten = keep},
+        ExampleCase{.name = "sheared-blocks", .shorten = keep},
+        ExampleCase{.name = "pinched-tube", .shorten = keep},
         ExampleCase{.name = "ball-drop",
                     .shorten =
                         [](json& s) {

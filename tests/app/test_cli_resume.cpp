@@ -13,7 +13,6 @@
 #include <random>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "app/app_test_support.hpp"

@@ -112,16 +112,18 @@ VectorX depth_from_field(const mesh::TetMesh& local, const std::string& name) {
 /// the cut are far from it.
 constexpr double kPlaneFaceAngleDeg = 30;
 
-/// True when face f of `boundary` (rest positions `rest`, body-local rows after subtracting
-/// `first_node`) lies in a plane with unit normal `n`: its normal within kPlaneFaceAngleDeg of ±n.
+/// True when face f of `boundary` (global node rows; `local` holds the body's nodes from
+/// `first_node` on) lies in a plane with unit normal `unit_normal`: its normal within
+/// kPlaneFaceAngleDeg of ±unit_normal.
 bool face_lies_in_plane(const mesh::TetMesh& local, const Triangles& boundary, Index f, Index first_node,
-                        const Vector3& n) {
+                        const Vector3& unit_normal) {
+  static const double min_cosine = std::cos(kPlaneFaceAngleDeg * M_PI / 180);
   const Vector3 a = local.rest.row(boundary(f, 0) - first_node), b = local.rest.row(boundary(f, 1) - first_node),
                 c = local.rest.row(boundary(f, 2) - first_node);
   const Vector3 normal = (b - a).cross(c - a);
   const double length = normal.norm();
   if (!(length > 0)) return true;  // degenerate: its nodes decide
-  return std::abs(normal.dot(n.normalized())) >= std::cos(kPlaneFaceAngleDeg * M_PI / 180) * length;
+  return std::abs(normal.dot(unit_normal)) >= min_cosine * length;
 }
 
 /// The faces of `boundary` whose three nodes are all chosen by one of `selectors` (of body
@@ -129,7 +131,7 @@ bool face_lies_in_plane(const mesh::TetMesh& local, const Triangles& boundary, I
 /// (each appended to `errors` as "<path>.<key>[k]: ..."). A plane selector chooses only the
 /// faces that lie in its plane (face_lies_in_plane): a side wall that meets a cut plane has
 /// faces whose nodes are all within the plane's tolerance near the cut, and they are not the
-/// cut (docs/contact.md, "Cut faces").
+/// cut (docs/contact.md, "Faces in one plane").
 std::optional<Triangles> faces_chosen_by(const fem::Problem& problem, const fem::BodyRange& body,
                                          const std::vector<NodeSelector>& selectors, const Triangles& boundary,
                                          const std::string& path, const char* key, std::vector<std::string>& errors,
@@ -147,10 +149,11 @@ std::optional<Triangles> faces_chosen_by(const fem::Problem& problem, const fem:
       continue;
     }
     const bool plane = selectors[s].kind == NodeSelector::Kind::Plane;
+    const Vector3 unit_normal = plane ? Vector3(selectors[s].normal.normalized()) : Vector3::Zero();
     for (Index f = 0; f < boundary.rows(); ++f) {
       bool all = true;
       for (int k = 0; k < 3; ++k) all = all && chosen[static_cast<std::size_t>(boundary(f, k) - body.first_node)];
-      if (all && plane) all = face_lies_in_plane(local, boundary, f, body.first_node, selectors[s].normal);
+      if (all && plane) all = face_lies_in_plane(local, boundary, f, body.first_node, unit_normal);
       if (all) in_surface[static_cast<std::size_t>(f)] = 1;
     }
   }
