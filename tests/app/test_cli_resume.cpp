@@ -108,6 +108,7 @@ TEST_F(Resume, ARunKilledAtRandomMomentsAndResumedEachTimeEndsAsAnUninterruptedO
   const long long stepping_ms = std::max<long long>(50, full_time.count() - setup_ms);
   std::mt19937 random(20261130);
   std::uniform_int_distribution<long long> moment(setup_ms / 2, setup_ms + 2 * stepping_ms / kKills);
+  std::uniform_int_distribution<long long> after_checkpoint(0, 2 * stepping_ms / kKills);
   int resumed = 0, killed = 0;
   for (int k = 0; k < kKills; ++k) {
     const bool has_checkpoint = fs::exists(output / "checkpoint.cbor");
@@ -117,10 +118,15 @@ TEST_F(Resume, ARunKilledAtRandomMomentsAndResumedEachTimeEndsAsAnUninterruptedO
     else if (fs::exists(output))
       extra.push_back("--overwrite");  // killed before its first checkpoint: start again
     resumed += has_checkpoint ? 1 : 0;
-    const int status =
-        run_and_signal(arguments(output, extra), directory,
-                       SignalPlan{.signal = SIGKILL, .delay = std::chrono::milliseconds(moment(random))})
-            .status;
+    // The first attempt is killed at a moment counted from its first checkpoint, so that the
+    // others resume however much slower or faster this machine is now than in the reference run;
+    // the others at a moment counted from their start (meshing, reading the checkpoint, stepping).
+    const SignalPlan plan =
+        k == 0 ? SignalPlan{.signal = SIGKILL,
+                            .ready = output / "checkpoint.cbor",
+                            .delay = std::chrono::milliseconds(after_checkpoint(random))}
+               : SignalPlan{.signal = SIGKILL, .delay = std::chrono::milliseconds(moment(random))};
+    const int status = run_and_signal(arguments(output, extra), directory, plan).status;
     if (WIFSIGNALED(status)) {
       ++killed;
     } else {
