@@ -12,9 +12,7 @@
 #include <sstream>
 #include <string>
 
-#include <spdlog/sinks/ostream_sink.h>
-
-#include "sinew/core/log.hpp"
+#include "support/captured_log.hpp"
 #include "sinew/model/contact_refinement.hpp"
 #include "sinew/model/model.hpp"
 #include "sinew/scene/load_scene.hpp"
@@ -27,22 +25,7 @@ VectorX pressures(const contact::ContactEnergy& contact, Index num_nodes) {
   return contact.pressure().size() == 0 ? VectorX::Zero(num_nodes) : contact.pressure();
 }
 
-/// What the project's logger writes while it lives.
-class CapturedLog {
- public:
-  CapturedLog() : sink_(std::make_shared<spdlog::sinks::ostream_sink_mt>(text_)) { logger().sinks().push_back(sink_); }
-  ~CapturedLog() {
-    auto& sinks = logger().sinks();
-    sinks.erase(std::remove(sinks.begin(), sinks.end(), sink_), sinks.end());
-  }
-  CapturedLog(const CapturedLog&) = delete;
-  CapturedLog& operator=(const CapturedLog&) = delete;
-  std::string text() const { return text_.str(); }
-
- private:
-  std::ostringstream text_;
-  std::shared_ptr<spdlog::sinks::ostream_sink_mt> sink_;
-};
+using sinew::testing::CapturedLog;
 
 /// The upper block of stacked-blocks pushed 0.1 mm into the lower one.
 fem::State pressed_blocks(const Model& model) {

@@ -108,7 +108,7 @@ void CollisionSet::find_pairs(const Positions& x, const std::vector<std::pair<In
       const auto [f, t] = candidates[k];
       if (!tet_has_depth_[static_cast<std::size_t>(t)]) continue;
       const double penalty = pair_penalty(g, f, t);
-      if (penalty == 0) continue;
+      if (penalty == 0 || pair_is_immovable(g, f, t)) continue;
       ActivePair& p = item.pair;
       p.triangle = f;
       p.tet = t;

@@ -42,6 +42,8 @@ void validate_contact_geometry(const ContactGeometry& g) {
     if (g.tet_body[k] < 0 || g.tet_body[k] >= bodies)
       throw InputError(fmt::format("contact: tet {} has body {} (there are {} bodies)", k, g.tet_body[k], bodies));
   const Index nodes = static_cast<Index>(g.depth.size());
+  if (!g.node_immovable.empty() && static_cast<Index>(g.node_immovable.size()) != nodes)
+    throw InputError(fmt::format("contact: node_immovable has {} entries for {} nodes", g.node_immovable.size(), nodes));
   for (Index a = 0; a < nodes; ++a)
     if (!std::isfinite(g.depth[a]) || g.depth[a] < 0)
       throw InputError(fmt::format("contact: the material depth of node {} is {} (must be finite and >= 0)", a,

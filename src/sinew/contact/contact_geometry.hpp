@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "sinew/contact/pair_integral.hpp"
 #include "sinew/core/enum_names.hpp"
@@ -43,6 +45,13 @@ struct ContactGeometry {
   /// either keeps the body pair's penalty.
   VectorX surface_penalty_scale;
   VectorX tet_penalty_scale;
+  /// Optional, #V or empty (none): 1 marks a node no unknown moves (fixed, prescribed, or a
+  /// member of a fixed or prescribed rigid body). A (triangle, tet) pair whose 7 nodes are all
+  /// immovable is left out of contact: its energy depends on no unknown, so it cannot change
+  /// the solution, yet an overlap of two immovable parts would add a constant force to every
+  /// residual's scale and a constant depth to every penetration figure (docs/contact.md,
+  /// "Parts that overlap at the start").
+  std::vector<std::uint8_t> node_immovable;
 };
 
 struct ContactOptions {
@@ -53,8 +62,8 @@ struct ContactOptions {
   std::size_t candidate_cap = 0;
 };
 
-/// Throws InputError when sizes disagree, a depth is negative or not finite, a penalty or a
-/// penalty scale is negative or not finite, the penalty matrix is not #B x #B symmetric, or a
+/// Throws InputError when sizes disagree (node_immovable included, unless empty), a depth is
+/// negative or not finite, a penalty or a penalty scale is negative or not finite, the penalty matrix is not #B x #B symmetric, or a
 /// triangle or tet refers to a body or node that does not exist.
 void validate_contact_geometry(const ContactGeometry& geometry);
 
@@ -69,6 +78,9 @@ inline std::array<Index, 7> pair_nodes(const ContactGeometry& geometry, Index f,
 /// The current positions x (#V x 3, L) of the pair (f, t) and the material depths (L) at the
 /// tet's nodes.
 inline PairGeometry pair_geometry(const ContactGeometry& geometry, const Positions& x, Index f, Index t);
+
+/// True when geometry.node_immovable marks all 7 nodes of the pair (surface triangle f, tet t).
+inline bool pair_is_immovable(const ContactGeometry& geometry, Index f, Index t);
 
 inline double pair_penalty(const ContactGeometry& g, Index f, Index t) {
   double e = g.penalty(g.surface_body[f], g.tet_body[t]);
@@ -95,6 +107,13 @@ inline PairGeometry pair_geometry(const ContactGeometry& g, const Positions& x, 
     pg.depth[k] = g.depth[a];
   }
   return pg;
+}
+
+inline bool pair_is_immovable(const ContactGeometry& g, Index f, Index t) {
+  if (g.node_immovable.empty()) return false;
+  for (const Index a : pair_nodes(g, f, t))
+    if (!g.node_immovable[static_cast<std::size_t>(a)]) return false;
+  return true;
 }
 
 }  // namespace sinew::contact

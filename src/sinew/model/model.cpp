@@ -6,8 +6,11 @@
 
 #include <fmt/format.h>
 
+#include "sinew/contact/body_overlap.hpp"
+#include "sinew/contact/contact_enforcement.hpp"
 #include "sinew/contact/contact_time_step.hpp"
 #include "sinew/core/error.hpp"
+#include "sinew/core/log.hpp"
 #include "sinew/fem/hessian_reduction.hpp"
 #include "sinew/fem/mass_matrix.hpp"
 #include "sinew/fem/stable_time_step.hpp"
@@ -199,6 +202,45 @@ void attach_contact(Model& model, contact::ContactGeometry geometry, const conta
   }
 }
 
+/// 1 for every node no unknown moves (#V): prescribed, or a member of a fixed or prescribed
+/// rigid body (contact leaves pairs of such nodes out, ContactGeometry::node_immovable).
+std::vector<std::uint8_t> immovable_nodes(const fem::DofMap& dofs, Index nodes) {
+  std::vector<std::uint8_t> immovable(static_cast<std::size_t>(nodes), 0);
+  for (Index a = 0; a < nodes; ++a) immovable[static_cast<std::size_t>(a)] = dofs.num_node_dofs(a) == 0;
+  return immovable;
+}
+
+/// Overlaps shallower than this fraction of the mean contact-surface edge are not reported.
+constexpr double kReportedStartOverlap = 1e-3;
+
+/// Warns about every pair of bodies that overlaps at the start state (docs/contact.md, "Parts
+/// that overlap at the start"): where the parts can move, contact pushes them apart in the
+/// first step; where neither can, the pairs are left out of contact.
+void warn_about_start_overlaps(const Model& model) {
+  const contact::ContactGeometry& g = model.contact->geometry();
+  const Positions x = model.dofs->initial_state(0.0).x;
+  const double h = contact::mean_surface_edge(g, x);
+  const auto& names = model.contact_setup->body_names;
+  for (const contact::BodyOverlap& o :
+       contact::body_overlaps(g, x, model.contact_setup->options.method, kReportedStartOverlap * h)) {
+    const std::string& a = names[static_cast<std::size_t>(o.body_a)];
+    const std::string& b = names[static_cast<std::size_t>(o.body_b)];
+    const std::string parts =
+        o.body_a == o.body_b ? fmt::format("body \"{}\" overlaps itself", a) : fmt::format("\"{}\" and \"{}\" overlap", a, b);
+    const std::string where = fmt::format("by up to {:.4g} ({:.2g} of the mean contact-surface edge) near ({:.4g}, "
+                                          "{:.4g}, {:.4g}), in {} triangle-tet pairs",
+                                          o.max_depth, o.max_depth / h, o.place.x(), o.place.y(), o.place.z(), o.pairs);
+    if (o.immovable)
+      logger().warn("contact at the start: {} {} where neither side can move (fixed or prescribed); those pairs "
+                    "are left out of contact",
+                    parts, where);
+    else
+      logger().warn("contact at the start: {} {}; contact pushes them apart in the first step (move the parts "
+                    "apart if they are not meant to overlap)",
+                    parts, where);
+  }
+}
+
 void detach_contact(Model& model) {
   model.friction.reset();
   model.contact.reset();
@@ -251,7 +293,9 @@ Model build_model(const scene::SceneConfig& scene) {
       model.friction_max_updates = f.max_updates;
       model.friction_tolerance = f.tolerance;
     }
+    model.contact_setup->geometry.node_immovable = immovable_nodes(*model.dofs, mesh.num_nodes());
     attach_contact(model, model.contact_setup->geometry, model.contact_setup->options);
+    warn_about_start_overlaps(model);
     model.contact_enforcement = scene.contact.enforcement;
     if (scene.contact.relative_penetration_tolerance)
       model.contact_enforcement.penetration_tolerance =
