@@ -7,6 +7,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
 #include "scene/scene_test_support.hpp"
 #include "sinew/model/solve_model.hpp"
 #include "sinew/scene/load_scene.hpp"
@@ -80,6 +86,34 @@ TEST(StartOverlap, PartsThatCanMoveAreNamedAndPartsThatOnlyTouchAreNot) {
   EXPECT_THAT(log.text(), HasSubstr("contact at the start: \"box\" and \"plate\" overlap by up to"));
   EXPECT_THAT(log.text(), HasSubstr("contact pushes them apart in the first step"));
   EXPECT_THAT(log.text(), Not(HasSubstr("left out of contact")));
+}
+
+// Six unit boxes 0.1 apart, each overlapping all the others: 15 overlapping pairs, the 10 deepest named.
+TEST(StartOverlap, ManyOverlapsAreCountedAndOnlyTheDeepestNamed) {
+  json scene = json::parse(R"({"units": "m, N, Pa",
+      "materials": {"gel": {"law": "neo-hookean", "mu": 1.0, "lambda": 10.0}}, "bodies": [], "contact": {}})");
+  for (int b = 0; b < 6; ++b) {
+    const double shift = 0.1 * b;
+    json body = json::parse(R"({"mesh": {"generate": {"element_size": 0.5, "parts": [
+        {"region": "gel", "shape": {"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}}]}},
+        "regions": {"gel": {"material": "gel"}}})");
+    body["name"] = fmt::format("box{}", b);
+    body["transform"] = {{"translate", {shift, 0.0, 0.0}}};
+    scene["bodies"].push_back(body);
+  }
+  CapturedLog log;
+  model_of(scene);
+  const std::string text = log.text();
+  EXPECT_THAT(text, HasSubstr("contact at the start: 15 overlaps of pairs of bodies; the 10 deepest follow"));
+  // Ten named, deepest first (material depth: a box's is at most 0.5, at its centre).
+  std::vector<double> depths;
+  const std::string marker = "\" overlap by up to ";
+  for (std::size_t at = text.find(marker); at != std::string::npos; at = text.find(marker, at + 1))
+    depths.push_back(std::stod(text.substr(at + marker.size())));
+  ASSERT_EQ(depths.size(), 10u);
+  EXPECT_TRUE(std::is_sorted(depths.rbegin(), depths.rend())) << text;
+  EXPECT_GT(depths.back(), 0.0);
+  EXPECT_LE(depths.front(), 0.5 + 1e-9);
 }
 
 }  // namespace

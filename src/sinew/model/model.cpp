@@ -212,6 +212,8 @@ std::vector<std::uint8_t> immovable_nodes(const fem::DofMap& dofs, Index nodes) 
 
 /// Overlaps shallower than this fraction of the mean contact-surface edge are not reported.
 constexpr double kReportedStartOverlap = 1e-3;
+/// At most this many overlaps are named one by one (the deepest); one line counts the rest.
+constexpr std::size_t kNamedStartOverlaps = 10;
 
 /// Warns about every pair of bodies that overlaps at the start state (docs/contact.md, "Parts
 /// that overlap at the start"): where the parts can move, contact pushes them apart in the
@@ -221,8 +223,13 @@ void warn_about_start_overlaps(const Model& model) {
   const Positions x = model.dofs->initial_state(0.0).x;
   const double h = contact::mean_surface_edge(g, x);
   const auto& names = model.contact_setup->body_names;
-  for (const contact::BodyOverlap& o :
-       contact::body_overlaps(g, x, model.contact_setup->options.method, kReportedStartOverlap * h)) {
+  const std::vector<contact::BodyOverlap> overlaps =
+      contact::body_overlaps(g, x, model.contact_setup->options.method, kReportedStartOverlap * h);
+  if (overlaps.size() > kNamedStartOverlaps)
+    logger().warn("contact at the start: {} overlaps of pairs of bodies; the {} deepest follow", overlaps.size(),
+                  kNamedStartOverlaps);
+  for (std::size_t k = 0; k < std::min(overlaps.size(), kNamedStartOverlaps); ++k) {
+    const contact::BodyOverlap& o = overlaps[k];
     const std::string& a = names[static_cast<std::size_t>(o.body_a)];
     const std::string& b = names[static_cast<std::size_t>(o.body_b)];
     const std::string parts =
