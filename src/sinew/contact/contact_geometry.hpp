@@ -48,8 +48,8 @@ struct ContactGeometry {
   /// Optional, #V or empty (none): 1 marks a node no unknown moves (fixed, prescribed, or a
   /// member of a fixed or prescribed rigid body). A (triangle, tet) pair whose 7 nodes are all
   /// immovable is left out of contact: its energy depends on no unknown, so it cannot change
-  /// the solution, yet an overlap of two immovable parts would add a constant force to every
-  /// residual's scale and a constant depth to every penetration figure (docs/contact.md,
+  /// the solution, yet an overlap of two immovable parts would add its forces to the scale of
+  /// Newton's convergence test and its depth to every penetration figure (docs/contact.md,
   /// "Parts that overlap at the start").
   std::vector<std::uint8_t> node_immovable;
 };
@@ -63,8 +63,9 @@ struct ContactOptions {
 };
 
 /// Throws InputError when sizes disagree (node_immovable included, unless empty), a depth is
-/// negative or not finite, a penalty or a penalty scale is negative or not finite, the penalty matrix is not #B x #B symmetric, or a
-/// triangle or tet refers to a body or node that does not exist.
+/// negative or not finite, a penalty or a penalty scale is negative or not finite, the penalty
+/// matrix is not #B x #B symmetric, or a triangle or tet refers to a body or node that does not
+/// exist.
 void validate_contact_geometry(const ContactGeometry& geometry);
 
 /// ε of surface triangle f against tet t: the body pair's penalty times the smaller of the two

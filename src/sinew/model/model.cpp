@@ -202,7 +202,7 @@ void attach_contact(Model& model, contact::ContactGeometry geometry, const conta
   }
 }
 
-/// 1 for every node no unknown moves (#V): prescribed, or a member of a fixed or prescribed
+/// 1 for every node no unknown moves (#V): fixed or prescribed, or a member of a fixed or prescribed
 /// rigid body (contact leaves pairs of such nodes out, ContactGeometry::node_immovable).
 std::vector<std::uint8_t> immovable_nodes(const fem::DofMap& dofs, Index nodes) {
   std::vector<std::uint8_t> immovable(static_cast<std::size_t>(nodes), 0);
