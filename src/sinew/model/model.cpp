@@ -219,6 +219,7 @@ constexpr std::size_t kNamedStartOverlaps = 10;
 /// that overlap at the start"): where the parts can move, contact pushes them apart in the
 /// first step; where neither can, the pairs are left out of contact.
 void warn_about_start_overlaps(const Model& model) {
+  if (!parallel::is_root()) return;  // the other ranks log nothing (docs/mpi.md): no collision pass for them
   const contact::ContactGeometry& g = model.contact->geometry();
   const Positions x = model.dofs->initial_state(0.0).x;
   const double h = contact::mean_surface_edge(g, x);
