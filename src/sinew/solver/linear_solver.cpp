@@ -11,6 +11,7 @@
 
 #include "sinew/core/error.hpp"
 #include "sinew/solver/petsc_linear_solver.hpp"
+#include "sinew/solver/serial_openmp.hpp"
 
 namespace sinew::solver {
 namespace {
@@ -20,7 +21,7 @@ double relative_residual(const SparseMatrix& K, const VectorX& x, const VectorX&
   return nb > 0 ? (K * x - b).norm() / nb : (K * x).norm();
 }
 
-/// CHOLMOD's supernodal LL^T. With options.lagged_iterations > 0, a new matrix is not
+/// CHOLMOD's supernodal LL^T, its OpenMP regions on the calling thread (serial_openmp.hpp). With options.lagged_iterations > 0, a new matrix is not
 /// factorized at once: CG preconditioned by the last good factorization solves with it, and only
 /// when CG does not reach options.lagged_tolerance within that many iterations (or meets
 /// negative curvature) is the matrix factorized (docs/solver.md, "Lagged factorizations").
@@ -67,6 +68,7 @@ class CholmodSolver final : public LinearSolver {
 
  private:
   void analyze_now(const SparseMatrix& K) {
+    const SerialOpenMpScope one_thread;
     llt_.analyzePattern(K);
     check_memory("analyze", K);
     pattern_pending_ = false;
@@ -75,6 +77,7 @@ class CholmodSolver final : public LinearSolver {
   bool factorize_now() {
     lagged_ = false;
     if (pattern_pending_) analyze_now(K_);
+    const SerialOpenMpScope one_thread;
     llt_.factorize(K_);
     check_memory("factorize", K_);
     ++factorizations_;
@@ -84,6 +87,7 @@ class CholmodSolver final : public LinearSolver {
   }
   LinearSolveStats direct_solve(const VectorX& b, VectorX& x) {
     LinearSolveStats stats;
+    const SerialOpenMpScope one_thread;
     x = llt_.solve(b);
     stats.success = llt_.info() == Eigen::Success && x.allFinite();
     stats.relative_residual = relative_residual(K_, x, b);
@@ -100,6 +104,7 @@ class CholmodSolver final : public LinearSolver {
       stats.success = true;
       return stats;
     }
+    const SerialOpenMpScope one_thread;
     VectorX r = b;
     VectorX z = llt_.solve(r);
     VectorX p = z;
