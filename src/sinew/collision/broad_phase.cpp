@@ -1,7 +1,6 @@
 #include "sinew/collision/broad_phase.hpp"
 
 #include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -37,24 +36,31 @@ std::vector<std::pair<Index, Index>> triangle_tet_candidates(const Positions& x,
   if (tet_tree.num_primitives() != tets.rows())
     throw std::invalid_argument("triangle_tet_candidates: tree over " + std::to_string(tet_tree.num_primitives()) +
                                 " boxes for " + std::to_string(tets.rows()) + " tets");
+  // Fixed blocks of triangles, each filled by whichever thread takes it and sorted within each
+  // triangle: concatenated in block order they are sorted, with no sort of the whole list.
   using Pairs = std::vector<std::pair<Index, Index>>;
-  tbb::enumerable_thread_specific<Pairs> per_thread;
-  tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(triangles.rows()), 64),
-                    [&](const tbb::blocked_range<Index>& range) {
-                      Pairs& local = per_thread.local();
-                      for (Index f = range.begin(); f != range.end(); ++f) {
-                        const Aabb box = box_of(x, triangles.row(f), triangle_inflate);
-                        tet_tree.query(box, [&](Index t) {
-                          if (!shares_node(triangles, f, tets, t)) local.emplace_back(f, t);
-                        });
-                      }
-                    });
+  constexpr Index kBlock = 64;
+  const Index num_triangles = static_cast<Index>(triangles.rows());
+  std::vector<Pairs> per_block(static_cast<std::size_t>((num_triangles + kBlock - 1) / kBlock));
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, per_block.size()), [&](const tbb::blocked_range<std::size_t>& range) {
+    for (std::size_t block = range.begin(); block != range.end(); ++block) {
+      Pairs& local = per_block[block];
+      const Index first = static_cast<Index>(block) * kBlock, last = std::min(num_triangles, first + kBlock);
+      for (Index f = first; f < last; ++f) {
+        const std::size_t begin = local.size();
+        const Aabb box = box_of(x, triangles.row(f), triangle_inflate);
+        tet_tree.query(box, [&](Index t) {
+          if (!shares_node(triangles, f, tets, t)) local.emplace_back(f, t);
+        });
+        std::sort(local.begin() + static_cast<std::ptrdiff_t>(begin), local.end());
+      }
+    }
+  });
   std::size_t total = 0;
-  for (const Pairs& p : per_thread) total += p.size();
+  for (const Pairs& p : per_block) total += p.size();
   Pairs pairs;
   pairs.reserve(total);
-  for (const Pairs& p : per_thread) pairs.insert(pairs.end(), p.begin(), p.end());
-  std::sort(pairs.begin(), pairs.end());
+  for (const Pairs& p : per_block) pairs.insert(pairs.end(), p.begin(), p.end());
   return pairs;
 }
 

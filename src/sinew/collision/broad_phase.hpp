@@ -28,8 +28,9 @@ bool shares_node(const Triangles& triangles, Index f, const Tets& tets, Index t)
 /// of triangles.row(f) in x grown by `triangle_inflate`, the tet box being the one stored in
 /// `tet_tree` (which must have been built or refit from tet_boxes(x, tets, ...)); pairs that share
 /// a node are skipped. Sorted lexicographically (triangle, then tet), identical for any number
-/// of threads. Runs in parallel over triangles (TBB), per-thread lists merged and sorted.
-/// x: #V x 3; triangles: #F x 3; tets: #T x 4 (indices into x). Cost O(F log T + k log k).
+/// of threads. Runs in parallel over fixed blocks of triangles (TBB); each triangle's tets are
+/// sorted, and the blocks concatenated in order. x: #V x 3; triangles: #F x 3; tets: #T x 4
+/// (indices into x). Cost O(F log T + k log m), m the most candidates of one triangle.
 std::vector<std::pair<Index, Index>> triangle_tet_candidates(const Positions& x, const Triangles& triangles,
                                                              const Tets& tets, const AabbTree& tet_tree,
                                                              double triangle_inflate = 0.0);

@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "sinew/collision/broad_phase.hpp"
@@ -93,38 +92,33 @@ void CollisionSet::update(const Positions& x) {
 }
 
 void CollisionSet::find_pairs(const Positions& x, const std::vector<std::pair<Index, Index>>& candidates) {
-  // Kept pairs are gathered per thread, then put back in the candidates' order.
-  struct Kept {
-    std::size_t candidate;
-    ActivePair pair;
-  };
+  // Fixed blocks of candidates, each filled by whichever thread takes it: concatenated in block
+  // order, the kept pairs are in the candidates' order for any number of threads.
+  constexpr std::size_t kBlock = 256;
   const ContactGeometry& g = *geometry_;
   const PairIntegrator& integrator = *integrator_;
-  tbb::enumerable_thread_specific<std::vector<Kept>> kept_per_thread;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 256), [&](const auto& range) {
-    std::vector<Kept>& kept = kept_per_thread.local();
-    Kept item;
-    for (std::size_t k = range.begin(); k != range.end(); ++k) {
-      const auto [f, t] = candidates[k];
-      if (!tet_has_depth_[static_cast<std::size_t>(t)]) continue;
-      const double penalty = pair_penalty(g, f, t);
-      if (penalty == 0 || pair_is_immovable(g, f, t)) continue;
-      ActivePair& p = item.pair;
-      p.triangle = f;
-      p.tet = t;
-      p.penalty = penalty;
-      if (integrator.find_support(pair_geometry(g, x, f, t), p.support)) {
-        item.candidate = k;
-        kept.push_back(item);
+  std::vector<std::vector<ActivePair>> per_block((candidates.size() + kBlock - 1) / kBlock);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, per_block.size()), [&](const auto& range) {
+    for (std::size_t block = range.begin(); block != range.end(); ++block) {
+      std::vector<ActivePair>& kept = per_block[block];
+      ActivePair p;
+      for (std::size_t k = block * kBlock, last = std::min(candidates.size(), k + kBlock); k < last; ++k) {
+        const auto [f, t] = candidates[k];
+        if (!tet_has_depth_[static_cast<std::size_t>(t)]) continue;
+        const double penalty = pair_penalty(g, f, t);
+        if (penalty == 0 || pair_is_immovable(g, f, t)) continue;
+        p.triangle = f;
+        p.tet = t;
+        p.penalty = penalty;
+        if (integrator.find_support(pair_geometry(g, x, f, t), p.support)) kept.push_back(p);
       }
     }
   });
-  std::vector<Kept> all;
-  for (auto& kept : kept_per_thread) all.insert(all.end(), kept.begin(), kept.end());
-  std::sort(all.begin(), all.end(), [](const Kept& a, const Kept& b) { return a.candidate < b.candidate; });
+  std::size_t total = 0;
+  for (const auto& kept : per_block) total += kept.size();
   active_.clear();
-  active_.reserve(all.size());
-  for (const Kept& item : all) active_.push_back(item.pair);
+  active_.reserve(total);
+  for (const auto& kept : per_block) active_.insert(active_.end(), kept.begin(), kept.end());
 }
 
 void CollisionSet::grow_pattern() {
