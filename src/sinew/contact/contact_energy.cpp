@@ -102,7 +102,8 @@ void ContactEnergy::add_hessian(const Positions& x, BlockSparseMatrix& H) const 
       for (std::size_t k = range.begin(); k != range.end(); ++k) {
         const ActivePair& p = pairs[k];
         PairMatrix& hessian = hessians[k - begin];
-        integrator.integral_hessian(collisions_.pair_geometry_at(x, p), p.support, options_.hessian, gradient, hessian);
+        integrator.integral_hessian(collisions_.pair_geometry_at(x, p), p.support, options_.hessian,
+                                    pair_unknowns(collisions_.geometry(), p.triangle, p.tet), gradient, hessian);
         hessian *= 0.5 * p.penalty;
         const auto nodes = collisions_.nodes(p);
         for (std::size_t i = 0; i < 7; ++i)

@@ -44,7 +44,9 @@ class ContactEnergy final : public Energy {
   /// grad (#V x 3) += dEc/dx (force). Throws Error at an overflowed configuration.
   void add_gradient(const Positions& x, NodalVectors& grad) const override;
   /// H += d²Ec/dx² (force / L) of the kind ContactOptions::hessian, into the blocks of
-  /// hessian_pattern(); throws std::logic_error when a block is missing.
+  /// hessian_pattern(); throws std::logic_error when a block is missing. With the exact kind, a
+  /// pair whose triangle or tet is immovable (pair_unknowns) adds nothing to the rows and
+  /// columns of that side's nodes, which no unknown moves.
   void add_hessian(const Positions& x, BlockSparseMatrix& H) const override;
   /// The union of the node blocks of every pair active since construction.
   void hessian_pattern(std::vector<std::pair<Index, Index>>& pairs) const override;

@@ -83,6 +83,11 @@ inline PairGeometry pair_geometry(const ContactGeometry& geometry, const Positio
 /// True when geometry.node_immovable marks all 7 nodes of the pair (surface triangle f, tet t).
 inline bool pair_is_immovable(const ContactGeometry& geometry, Index f, Index t);
 
+/// The nodes of the pair whose Hessian rows are wanted (pair_integral.hpp): Tet when the
+/// triangle's three nodes are all immovable, Triangle when the tet's four are, All otherwise
+/// (also for a pair immovable on both sides, which the pair search leaves out).
+inline PairUnknowns pair_unknowns(const ContactGeometry& geometry, Index f, Index t);
+
 inline double pair_penalty(const ContactGeometry& g, Index f, Index t) {
   double e = g.penalty(g.surface_body[f], g.tet_body[t]);
   if (g.surface_penalty_scale.size() > 0 || g.tet_penalty_scale.size() > 0) {
@@ -115,6 +120,16 @@ inline bool pair_is_immovable(const ContactGeometry& g, Index f, Index t) {
   for (const Index a : pair_nodes(g, f, t))
     if (!g.node_immovable[static_cast<std::size_t>(a)]) return false;
   return true;
+}
+
+inline PairUnknowns pair_unknowns(const ContactGeometry& g, Index f, Index t) {
+  if (g.node_immovable.empty()) return PairUnknowns::All;
+  const auto immovable = [&g](Index a) { return g.node_immovable[static_cast<std::size_t>(a)] != 0; };
+  const bool triangle_held = immovable(g.surface(f, 0)) && immovable(g.surface(f, 1)) && immovable(g.surface(f, 2));
+  const bool tet_held =
+      immovable(g.tets(t, 0)) && immovable(g.tets(t, 1)) && immovable(g.tets(t, 2)) && immovable(g.tets(t, 3));
+  if (triangle_held == tet_held) return PairUnknowns::All;
+  return triangle_held ? PairUnknowns::Tet : PairUnknowns::Triangle;
 }
 
 }  // namespace sinew::contact

@@ -49,15 +49,24 @@ S make_variable(double value, int index) {
   }
 }
 
+/// The pair's nodes; those of `unknowns` are the variables, numbered in order from 0 (the
+/// triangle's first when both vary), the others constants.
 template <class S>
-Nodes<S> make_nodes(const PairGeometry& pair) {
+Nodes<S> make_nodes(const PairGeometry& pair, PairUnknowns unknowns = PairUnknowns::All) {
+  const bool triangle_varies = unknowns != PairUnknowns::Tet, tet_varies = unknowns != PairUnknowns::Triangle;
+  const int first_tet_variable = triangle_varies ? 9 : 0;
+  const auto coordinate = [](double value, bool varies, int index) {
+    return varies ? make_variable<S>(value, index) : S(value);
+  };
   Nodes<S> n;
   for (int k = 0; k < 3; ++k)
-    n.tri[k] = {make_variable<S>(pair.triangle(k, 0), 3 * k), make_variable<S>(pair.triangle(k, 1), 3 * k + 1),
-                make_variable<S>(pair.triangle(k, 2), 3 * k + 2)};
+    n.tri[k] = {coordinate(pair.triangle(k, 0), triangle_varies, 3 * k),
+                coordinate(pair.triangle(k, 1), triangle_varies, 3 * k + 1),
+                coordinate(pair.triangle(k, 2), triangle_varies, 3 * k + 2)};
   for (int k = 0; k < 4; ++k)
-    n.tet[k] = {make_variable<S>(pair.tet(k, 0), 9 + 3 * k), make_variable<S>(pair.tet(k, 1), 9 + 3 * k + 1),
-                make_variable<S>(pair.tet(k, 2), 9 + 3 * k + 2)};
+    n.tet[k] = {coordinate(pair.tet(k, 0), tet_varies, first_tet_variable + 3 * k),
+                coordinate(pair.tet(k, 1), tet_varies, first_tet_variable + 3 * k + 1),
+                coordinate(pair.tet(k, 2), tet_varies, first_tet_variable + 3 * k + 2)};
   return n;
 }
 
@@ -276,15 +285,17 @@ S onset_ramp(const S& g, double onset) {
 }
 
 template <class S>
-S area_integral_t(const PairGeometry& pair, const collision::ClipPolygon& polygon) {
+S area_integral_t(const PairGeometry& pair, const collision::ClipPolygon& polygon,
+                  PairUnknowns unknowns = PairUnknowns::All) {
   if (polygon.count < 3) return S(0.0);
-  return fan_integral(make_fan(make_nodes<S>(pair), pair, polygon), pair.multiplier_onset);
+  return fan_integral(make_fan(make_nodes<S>(pair, unknowns), pair, polygon), pair.multiplier_onset);
 }
 
 template <class S>
-S point_integral_t(const PairGeometry& pair, const collision::CollocationPoints& points) {
+S point_integral_t(const PairGeometry& pair, const collision::CollocationPoints& points,
+                   PairUnknowns unknowns = PairUnknowns::All) {
   if (points.count == 0) return S(0.0);
-  const Nodes<S> n = make_nodes<S>(pair);
+  const Nodes<S> n = make_nodes<S>(pair, unknowns);
   const DepthField<S> field = depth_field(n, pair.depth);
   const Vec<S> normal = cross(n.tri[1] - n.tri[0], n.tri[2] - n.tri[0]);
   const S weight = sqrt(dot(normal, normal)) * (0.5 / 3.0);
@@ -317,16 +328,40 @@ double tape_gradient(F&& f, PairVector& gradient) {
   tape.gradient(I.node, gradient);
   return I.v;
 }
-using TS = TapeScalar<kPairVariables>;
-
-/// Exact gradient and Hessian of f<TapeScalar>() by reverse-over-forward differentiation.
-template <class F>
-double tape_hessian(F&& f, PairVector& gradient, PairMatrix& hessian) {
-  thread_local Tape<kPairVariables> tape;
-  const typename Tape<kPairVariables>::Scope scope(tape);
-  const TS I = f();
-  tape.gradient_and_hessian(I.node, gradient, hessian);
+/// Exact gradient and Hessian of f(TapeScalar<N>{}) (f is generic in its scalar type) by
+/// reverse-over-forward differentiation, with respect to N variables that are the pair's
+/// variables first .. first + N - 1; the rest of `gradient` and `hessian` is zero.
+template <int N, class F>
+double tape_hessian_of(F&& f, int first, PairVector& gradient, PairMatrix& hessian) {
+  thread_local Tape<N> tape;
+  const typename Tape<N>::Scope scope(tape);
+  const TapeScalar<N> I = f(TapeScalar<N>{});
+  if constexpr (N == kPairVariables) {
+    tape.gradient_and_hessian(I.node, gradient, hessian);
+  } else {
+    Eigen::Matrix<double, N, 1> g;
+    Eigen::Matrix<double, N, N> h;
+    tape.gradient_and_hessian(I.node, g, h);
+    gradient.setZero();
+    hessian.setZero();
+    gradient.template segment<N>(first) = g;
+    hessian.template block<N, N>(first, first) = h;
+  }
   return I.v();
+}
+
+/// tape_hessian_of for the variables of `unknowns` (Triangle: 0..8, Tet: 9..20, All: 0..20).
+template <class F>
+double tape_hessian(F&& f, PairUnknowns unknowns, PairVector& gradient, PairMatrix& hessian) {
+  switch (unknowns) {
+    case PairUnknowns::Triangle:
+      return tape_hessian_of<9>(f, 0, gradient, hessian);
+    case PairUnknowns::Tet:
+      return tape_hessian_of<12>(f, 9, gradient, hessian);
+    case PairUnknowns::All:
+      break;
+  }
+  return tape_hessian_of<kPairVariables>(f, 0, gradient, hessian);
 }
 
 }  // namespace
@@ -345,15 +380,20 @@ double area_integral_gradient(const PairGeometry& pair, const collision::ClipPol
 }
 
 double area_integral_hessian(const PairGeometry& pair, const collision::ClipPolygon& polygon, PairHessian kind,
-                             PairVector& gradient, PairMatrix& hessian) {
+                             PairVector& gradient, PairMatrix& hessian, PairUnknowns unknowns) {
   if (degenerate_triangle(pair)) {
     gradient.setZero();
     hessian.setZero();
     return 0;
   }
-  if (kind != PairHessian::GaussNewton) {
-    const double I = tape_hessian([&] { return area_integral_t<TS>(pair, polygon); }, gradient, hessian);
-    if (kind == PairHessian::Projected) hessian = project_to_psd(hessian);
+  if (kind == PairHessian::Exact) {
+    return tape_hessian(
+        [&]<class S>(S) { return area_integral_t<S>(pair, polygon, unknowns); }, unknowns, gradient, hessian);
+  }
+  if (kind == PairHessian::Projected) {
+    const double I = tape_hessian([&]<class S>(S) { return area_integral_t<S>(pair, polygon); }, PairUnknowns::All,
+                                  gradient, hessian);
+    hessian = project_to_psd(hessian);
     return I;
   }
   // Gauss-Newton: per fan triangle, A/12 (a² + b² + c² + s²) -> A/6 (∇a∇aᵀ + ∇b∇bᵀ + ∇c∇cᵀ + ∇s∇sᵀ)
@@ -439,15 +479,20 @@ double point_integral_gradient(const PairGeometry& pair, const collision::Colloc
 }
 
 double point_integral_hessian(const PairGeometry& pair, const collision::CollocationPoints& points,
-                              PairHessian kind, PairVector& gradient, PairMatrix& hessian) {
+                              PairHessian kind, PairVector& gradient, PairMatrix& hessian, PairUnknowns unknowns) {
   if (degenerate_triangle(pair)) {
     gradient.setZero();
     hessian.setZero();
     return 0;
   }
-  if (kind != PairHessian::GaussNewton) {
-    const double I = tape_hessian([&] { return point_integral_t<TS>(pair, points); }, gradient, hessian);
-    if (kind == PairHessian::Projected) hessian = project_to_psd(hessian);
+  if (kind == PairHessian::Exact) {
+    return tape_hessian(
+        [&]<class S>(S) { return point_integral_t<S>(pair, points, unknowns); }, unknowns, gradient, hessian);
+  }
+  if (kind == PairHessian::Projected) {
+    const double I = tape_hessian([&]<class S>(S) { return point_integral_t<S>(pair, points); }, PairUnknowns::All,
+                                  gradient, hessian);
+    hessian = project_to_psd(hessian);
     return I;
   }
   hessian.setZero();

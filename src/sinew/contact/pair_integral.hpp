@@ -61,15 +61,29 @@ inline constexpr NameTable<PairHessian, 3> kPairHessianNames{{
 }};
 constexpr const auto& enum_names(PairHessian) { return kPairHessianNames; }
 
+/// Which of a pair's nodes its Hessian is wanted for. A side whose nodes no unknown moves (fixed,
+/// prescribed, members of a fixed or prescribed rigid body) needs no rows: its nodes are held
+/// constant, the derivatives are taken with respect to the other side's 9 or 12 coordinates
+/// only (a third to a half of the work), and the held side's rows and columns of the Hessian,
+/// and its entries of the gradient, come out zero. The other entries are the same numbers as
+/// with All. Only PairHessian::Exact uses it: Projected (which projects the whole 21 x 21 matrix)
+/// and GaussNewton always give all rows.
+enum class PairUnknowns {
+  All,       ///< all seven nodes
+  Triangle,  ///< the triangle's three nodes (the tet's are held)
+  Tet,       ///< the tet's four nodes (the triangle's are held)
+};
+
 /// ∫ g² da over the clip polygon `polygon` (from clip_triangle_tet of the same geometry).
 /// Zero for an empty polygon.
 double area_integral(const PairGeometry& pair, const collision::ClipPolygon& polygon);
 /// Same value; also writes dI/d(21 variables) into `gradient`.
 double area_integral_gradient(const PairGeometry& pair, const collision::ClipPolygon& polygon,
                               PairVector& gradient);
-/// Same value and gradient; also writes the Hessian (21 x 21) of the chosen kind.
+/// Same value and gradient; also writes the Hessian (21 x 21) of the chosen kind, with respect to
+/// `unknowns` (the gradient too).
 double area_integral_hessian(const PairGeometry& pair, const collision::ClipPolygon& polygon, PairHessian kind,
-                             PairVector& gradient, PairMatrix& hessian);
+                             PairVector& gradient, PairMatrix& hessian, PairUnknowns unknowns = PairUnknowns::All);
 
 /// Polygon statistics: area (L²), ∫ g da (L³) and the largest g on the polygon (L); and per
 /// triangle vertex k, with N_k its linear shape function on the triangle, ∫ N_k da (L²) and
@@ -97,7 +111,8 @@ double point_integral(const PairGeometry& pair, const collision::CollocationPoin
 double point_integral_gradient(const PairGeometry& pair, const collision::CollocationPoints& points,
                                PairVector& gradient);
 double point_integral_hessian(const PairGeometry& pair, const collision::CollocationPoints& points,
-                              PairHessian kind, PairVector& gradient, PairMatrix& hessian);
+                              PairHessian kind, PairVector& gradient, PairMatrix& hessian,
+                              PairUnknowns unknowns = PairUnknowns::All);
 PolygonMoments point_moments(const PairGeometry& pair, const collision::CollocationPoints& points);
 
 }  // namespace sinew::contact

@@ -42,9 +42,8 @@ const PairIntegrator kAreaIntegrator{
     [](const PairGeometry& pg, const PairSupport& s, PairVector& gradient) {
       return area_integral_gradient(pg, s.polygon, gradient);
     },
-    [](const PairGeometry& pg, const PairSupport& s, PairHessian kind, PairVector& gradient, PairMatrix& hessian) {
-      return area_integral_hessian(pg, s.polygon, kind, gradient, hessian);
-    },
+    [](const PairGeometry& pg, const PairSupport& s, PairHessian kind, PairUnknowns unknowns, PairVector& gradient,
+       PairMatrix& hessian) { return area_integral_hessian(pg, s.polygon, kind, gradient, hessian, unknowns); },
     [](const PairGeometry& pg, const PairSupport& s) { return area_moments(pg, s.polygon); },
 };
 
@@ -58,9 +57,8 @@ const PairIntegrator kPointIntegrator{
     [](const PairGeometry& pg, const PairSupport& s, PairVector& gradient) {
       return point_integral_gradient(pg, s.points, gradient);
     },
-    [](const PairGeometry& pg, const PairSupport& s, PairHessian kind, PairVector& gradient, PairMatrix& hessian) {
-      return point_integral_hessian(pg, s.points, kind, gradient, hessian);
-    },
+    [](const PairGeometry& pg, const PairSupport& s, PairHessian kind, PairUnknowns unknowns, PairVector& gradient,
+       PairMatrix& hessian) { return point_integral_hessian(pg, s.points, kind, gradient, hessian, unknowns); },
     [](const PairGeometry& pg, const PairSupport& s) { return point_moments(pg, s.points); },
 };
 

@@ -33,9 +33,9 @@ struct PairIntegrator {
   double (*integral)(const PairGeometry& pair, const PairSupport& support);
   /// I; writes dI/dx into `gradient`.
   double (*integral_gradient)(const PairGeometry& pair, const PairSupport& support, PairVector& gradient);
-  /// I; writes the gradient and the 21 x 21 Hessian of kind `kind`.
+  /// I; writes the gradient and the 21 x 21 Hessian of kind `kind` with respect to `unknowns`.
   double (*integral_hessian)(const PairGeometry& pair, const PairSupport& support, PairHessian kind,
-                             PairVector& gradient, PairMatrix& hessian);
+                             PairUnknowns unknowns, PairVector& gradient, PairMatrix& hessian);
   /// Area (L²), ∫ g da (L³) and largest g (L) of the support (point method: A_t/3 per vertex).
   PolygonMoments (*moments)(const PairGeometry& pair, const PairSupport& support);
 };

@@ -95,10 +95,13 @@ void HessianReduction::reduce(const State& state, const BlockSparseMatrix& H, co
         for (int i = 0; i < 3; ++i)
           for (int j = 0; j < 3; ++j) values[target[3 * i + j]] += M(i, j);
       } else {
-        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6> M =
-            (identity[a] ? Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6>(Matrix3::Identity()) : jac[a])
-                .transpose() *
-            blocks[k] * (identity[b] ? Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6>(Matrix3::Identity()) : jac[b]);
+        // Products of at most 6 x 3, 3 x 3 and 3 x 6 matrices, coefficient by coefficient
+        // (Eigen's general matrix product would block and pack these dynamic-sized operands).
+        using NodeJacobian = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6>;
+        const NodeJacobian Ja = identity[a] ? NodeJacobian(Matrix3::Identity()) : jac[a];
+        const NodeJacobian Jb = identity[b] ? NodeJacobian(Matrix3::Identity()) : jac[b];
+        const Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 6, 3> JaM = Ja.transpose().lazyProduct(blocks[k]);
+        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6> M = JaM.lazyProduct(Jb);
         for (int i = 0; i < na.ndof; ++i)
           for (int j = 0; j < nb.ndof; ++j) values[target[nb.ndof * i + j]] += M(i, j);
       }
