@@ -110,6 +110,43 @@ TEST(BroadPhase, CandidatesMatchBruteForceAfterRefitAndRebuild) {
   }
 }
 
+// Trees over subsets of the tets, each triangle's group naming the trees it is tested against:
+// the all-tets candidates restricted to those trees, in the same order.
+TEST(BroadPhase, GroupedTreesGiveTheCandidatesOfTheTreesEachGroupNames) {
+  std::mt19937 rng(5);
+  const TwoBodies m = two_overlapping_boxes(rng);
+  const Pairs all = brute_force(m.x, m.triangles, m.tets, 0.0);
+  const Index faces_of_first = static_cast<Index>(mesh::boundary_triangles(m.tets.topRows(m.tets_of_first)).rows());
+  IndexVector group(m.triangles.rows());
+  for (Index f = 0; f < m.triangles.rows(); ++f) group[f] = f < faces_of_first ? 0 : 1;
+  // Tree 0: the first body's tets with an even index; tree 1: all of the second body's.
+  std::vector<TetSubsetTree> trees(2);
+  for (Index t = 0; t < m.tets.rows(); ++t) {
+    if (t < m.tets_of_first && t % 2 == 0) trees[0].tets.push_back(t);
+    if (t >= m.tets_of_first) trees[1].tets.push_back(t);
+  }
+  for (TetSubsetTree& t : trees) t.tree.build(subset_boxes(m.x, m.tets, t.tets));
+  const auto in_tree = [&](int k, Index t) {
+    return std::binary_search(trees[static_cast<std::size_t>(k)].tets.begin(), trees[static_cast<std::size_t>(k)].tets.end(), t);
+  };
+  // Group 0 (the first body's triangles) against the second body only; group 1 against both.
+  const std::vector<std::vector<int>> trees_of_group{{1}, {0, 1}};
+  Pairs expected;
+  for (const auto& [f, t] : all) {
+    const bool wanted = group[f] == 0 ? in_tree(1, t) : (in_tree(0, t) || in_tree(1, t));
+    if (wanted) expected.emplace_back(f, t);
+  }
+  const Pairs grouped = triangle_tet_candidates(m.x, m.triangles, m.tets, trees, group, trees_of_group);
+  EXPECT_EQ(grouped, expected);
+  EXPECT_LT(grouped.size(), all.size());
+  EXPECT_GT(grouped.size(), 0u);
+  // A group with no trees is tested against nothing.
+  EXPECT_TRUE(triangle_tet_candidates(m.x, m.triangles, m.tets, trees, group, {{}, {}}).empty());
+  // Arrays that do not match the trees are programming errors.
+  EXPECT_THROW(triangle_tet_candidates(m.x, m.triangles, m.tets, trees, IndexVector(3), trees_of_group),
+               std::invalid_argument);
+}
+
 TEST(BroadPhase, TriangleInflationFindsNearbyTets) {
   Positions x(7, 3);
   x << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1,  // tet

@@ -35,4 +35,25 @@ std::vector<std::pair<Index, Index>> triangle_tet_candidates(const Positions& x,
                                                              const Tets& tets, const AabbTree& tet_tree,
                                                              double triangle_inflate = 0.0);
 
+/// A bounding-volume hierarchy over some of the tets: primitive i of `tree` is tet `tets[i]`.
+struct TetSubsetTree {
+  std::vector<Index> tets;  ///< global tet indices, in the tree's primitive numbering
+  AabbTree tree;            ///< built or refit from subset_boxes(x, tets_array, tets)
+};
+
+/// One box per tet of the subset `subset` (global indices into `tets`), in that order.
+std::vector<Aabb> subset_boxes(const Positions& x, const Tets& tets, const std::vector<Index>& subset);
+
+/// Candidate pairs as triangle_tet_candidates above, each triangle tested only against some of
+/// the trees: triangle f belongs to group triangle_group[f] (#F, 0 .. G-1), and group g is tested
+/// against the trees trees[k] for k in trees_of_group[g] (G lists). Pairs that share a node are
+/// skipped; the result is sorted (triangle, then tet) and identical for any number of threads, so
+/// it is the all-tets candidate list restricted to the trees each group names.
+std::vector<std::pair<Index, Index>> triangle_tet_candidates(const Positions& x, const Triangles& triangles,
+                                                             const Tets& tets,
+                                                             const std::vector<TetSubsetTree>& trees,
+                                                             const IndexVector& triangle_group,
+                                                             const std::vector<std::vector<int>>& trees_of_group,
+                                                             double triangle_inflate = 0.0);
+
 }  // namespace sinew::collision

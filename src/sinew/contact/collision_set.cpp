@@ -33,11 +33,31 @@ CollisionSet::CollisionSet(std::shared_ptr<const ContactGeometry> geometry, Cont
   candidate_cap_ =
       candidate_cap > 0 ? candidate_cap : std::max<std::size_t>(100000, 20 * static_cast<std::size_t>(g.tets.rows()));
   tet_has_depth_.resize(static_cast<std::size_t>(g.tets.rows()));
+  const auto num_bodies = static_cast<std::size_t>(g.penalty.rows());
+  trees_.resize(num_bodies);
   for (Index t = 0; t < g.tets.rows(); ++t) {
     double m = 0;
     for (int k = 0; k < 4; ++k) m = std::max(m, g.depth[g.tets(t, k)]);
     tet_has_depth_[static_cast<std::size_t>(t)] = m > 0;
+    if (m > 0) trees_[static_cast<std::size_t>(g.tet_body[t])].tets.push_back(t);
   }
+  // Which penalties are positive never changes (set_penalty).
+  trees_of_body_.resize(num_bodies);
+  for (std::size_t a = 0; a < num_bodies; ++a)
+    for (std::size_t b = 0; b < num_bodies; ++b)
+      if (g.penalty(static_cast<Index>(a), static_cast<Index>(b)) > 0 && !trees_[b].tets.empty())
+        trees_of_body_[a].push_back(static_cast<int>(b));
+}
+
+void CollisionSet::fit_trees(const Positions& x, bool rebuild) {
+  for (collision::TetSubsetTree& t : trees_) {
+    const std::vector<collision::Aabb> boxes = collision::subset_boxes(x, geometry_->tets, t.tets);
+    if (rebuild)
+      t.tree.build(boxes);
+    else
+      t.tree.refit(boxes);
+  }
+  tree_built_ = true;
 }
 
 CollisionSet::CollisionSet(ContactGeometry geometry, ContactMethod method, std::size_t candidate_cap)
@@ -56,8 +76,7 @@ bool CollisionSet::is_current(const Positions& x) const {
 
 void CollisionSet::rebuild(const Positions& x) {
   check_size(x, "CollisionSet::rebuild");
-  tree_.build(collision::tet_boxes(x, geometry_->tets));
-  tree_built_ = true;
+  fit_trees(x, /*rebuild=*/true);
   positions_.resize(0, 3);  // force update() to recompute the pairs
   update(x);
 }
@@ -67,16 +86,11 @@ void CollisionSet::update(const Positions& x) {
   check_size(x, "CollisionSet::update");
   const ContactGeometry& g = *geometry_;
   auto t0 = Clock::now();
-  if (!tree_built_) {
-    tree_.build(collision::tet_boxes(x, g.tets));
-    tree_built_ = true;
-  } else {
-    tree_.refit(collision::tet_boxes(x, g.tets));
-  }
+  fit_trees(x, /*rebuild=*/!tree_built_);
   positions_ = x;
   times_.refit = seconds_since(t0);
   t0 = Clock::now();
-  const auto candidates = collision::triangle_tet_candidates(x, g.surface, g.tets, tree_);
+  const auto candidates = collision::triangle_tet_candidates(x, g.surface, g.tets, trees_, g.surface_body, trees_of_body_);
   times_.query = seconds_since(t0);
   times_.candidates = static_cast<Index>(candidates.size());
   overflowed_ = candidates.size() > candidate_cap_;

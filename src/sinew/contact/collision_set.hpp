@@ -3,9 +3,10 @@
 /// The set of colliding (surface triangle, tet) pairs of a configuration, in the manner of
 /// ipc-toolkit's collision sets: collision detection and its bookkeeping, no energy.
 ///
-/// An AabbTree over the tets is built by rebuild() and refit by update() at every new
-/// configuration; each surface triangle is queried against it (broad phase), and the candidates
-/// are kept when their penalty is not zero, their tet has a non-zero depth somewhere and the
+/// An AabbTree per body over its tets with a non-zero depth somewhere is built by rebuild() and
+/// refit by update() at every new configuration; each surface triangle is queried against the
+/// trees of the bodies its body has a positive penalty with (broad phase), and the candidates
+/// are kept when their pair's penalty is not zero, not all seven nodes are immovable and the
 /// method's PairIntegrator finds a support for them (narrow phase: clip polygon or collocation
 /// points). Pairs that share a node never come out of the broad phase. A configuration whose
 /// broad phase finds more candidates than the cap is "overflowed": no pairs are built.
@@ -26,6 +27,7 @@
 #include <vector>
 
 #include "sinew/collision/aabb_tree.hpp"
+#include "sinew/collision/broad_phase.hpp"
 #include "sinew/contact/contact_geometry.hpp"
 #include "sinew/contact/pair_integrator.hpp"
 
@@ -122,6 +124,8 @@ class CollisionSet {
 
  private:
   void check_size(const Positions& x, const char* caller) const;
+  /// Builds (rebuild) or refits every body's tree at x.
+  void fit_trees(const Positions& x, bool rebuild);
   /// Narrow phase of the candidates at x into active_.
   void find_pairs(const Positions& x, const std::vector<std::pair<Index, Index>>& candidates);
   /// Adds the blocks of pairs never seen before to the pattern union.
@@ -132,7 +136,11 @@ class CollisionSet {
   std::size_t candidate_cap_;
   /// Per tet (#T): false when its four nodes all have zero depth (g ≡ 0, no energy; skipped).
   std::vector<char> tet_has_depth_;
-  collision::AabbTree tree_;
+  /// Per body: a tree over its tets that have depth (those without are never a pair).
+  std::vector<collision::TetSubsetTree> trees_;
+  /// Per body of the surface triangles: the trees of the bodies it has a positive penalty with
+  /// (the broad phase never tests a triangle against a body it cannot contact).
+  std::vector<std::vector<int>> trees_of_body_;
   bool tree_built_ = false;
   Positions positions_;
   std::vector<ActivePair> active_;
