@@ -127,7 +127,8 @@ TEST(BroadPhase, GroupedTreesGiveTheCandidatesOfTheTreesEachGroupNames) {
   }
   for (TetSubsetTree& t : trees) t.tree.build(subset_boxes(m.x, m.tets, t.tets));
   const auto in_tree = [&](int k, Index t) {
-    return std::binary_search(trees[static_cast<std::size_t>(k)].tets.begin(), trees[static_cast<std::size_t>(k)].tets.end(), t);
+    const std::vector<Index>& tets = trees[static_cast<std::size_t>(k)].tets;
+    return std::binary_search(tets.begin(), tets.end(), t);
   };
   // Group 0 (the first body's triangles) against the second body only; group 1 against both.
   const std::vector<std::vector<int>> trees_of_group{{1}, {0, 1}};

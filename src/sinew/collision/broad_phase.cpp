@@ -42,7 +42,8 @@ Pairs candidates_by_blocks(const Triangles& triangles, const Tets& tets, Query&&
   constexpr Index kBlock = 64;
   const Index num_triangles = static_cast<Index>(triangles.rows());
   std::vector<Pairs> per_block(static_cast<std::size_t>((num_triangles + kBlock - 1) / kBlock));
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, per_block.size()), [&](const tbb::blocked_range<std::size_t>& range) {
+  using Blocks = tbb::blocked_range<std::size_t>;
+  tbb::parallel_for(Blocks(0, per_block.size()), [&](const Blocks& range) {
     for (std::size_t block = range.begin(); block != range.end(); ++block) {
       Pairs& local = per_block[block];
       const Index first = static_cast<Index>(block) * kBlock, last = std::min(num_triangles, first + kBlock);

@@ -90,7 +90,8 @@ void CollisionSet::update(const Positions& x) {
   positions_ = x;
   times_.refit = seconds_since(t0);
   t0 = Clock::now();
-  const auto candidates = collision::triangle_tet_candidates(x, g.surface, g.tets, trees_, g.surface_body, trees_of_body_);
+  const auto candidates =
+      collision::triangle_tet_candidates(x, g.surface, g.tets, trees_, g.surface_body, trees_of_body_);
   times_.query = seconds_since(t0);
   times_.candidates = static_cast<Index>(candidates.size());
   overflowed_ = candidates.size() > candidate_cap_;

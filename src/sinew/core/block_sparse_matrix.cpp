@@ -5,22 +5,36 @@
 namespace sinew {
 
 void BlockSparseMatrix::set_pattern(Index num_nodes, std::vector<std::pair<Index, Index>> pairs) {
-  const std::size_t n = pairs.size();
-  pairs.reserve(2 * n + static_cast<std::size_t>(num_nodes));
-  for (std::size_t i = 0; i < n; ++i) pairs.emplace_back(pairs[i].second, pairs[i].first);
-  for (Index a = 0; a < num_nodes; ++a) pairs.emplace_back(a, a);
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  // Bucketed by row (each pair in both orders, plus the diagonal), then each row sorted and
+  // deduplicated: the same pattern as sorting the whole list, at the cost of sorting short rows.
+  const auto rows = static_cast<std::size_t>(num_nodes);
+  std::vector<Index> count(rows + 1, 0);
+  for (const auto& [a, b] : pairs) {
+    ++count[static_cast<std::size_t>(a) + 1];
+    ++count[static_cast<std::size_t>(b) + 1];
+  }
+  for (std::size_t a = 0; a < rows; ++a) count[a + 1] += count[a] + 1;  // + the diagonal block
+  std::vector<Index> next(count.begin(), count.end() - 1);
+  std::vector<Index> columns(static_cast<std::size_t>(count[rows]));
+  for (Index a = 0; a < num_nodes; ++a) columns[static_cast<std::size_t>(next[static_cast<std::size_t>(a)]++)] = a;
+  for (const auto& [a, b] : pairs) {
+    columns[static_cast<std::size_t>(next[static_cast<std::size_t>(a)]++)] = b;
+    columns[static_cast<std::size_t>(next[static_cast<std::size_t>(b)]++)] = a;
+  }
+  pairs.clear();
+  pairs.shrink_to_fit();
 
   num_nodes_ = num_nodes;
-  row_offsets_.assign(static_cast<std::size_t>(num_nodes) + 1, 0);
-  columns_.resize(pairs.size());
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    ++row_offsets_[static_cast<std::size_t>(pairs[k].first) + 1];
-    columns_[k] = pairs[k].second;
+  row_offsets_.assign(rows + 1, 0);
+  columns_.clear();
+  columns_.reserve(columns.size());
+  for (std::size_t a = 0; a < rows; ++a) {
+    const auto begin = columns.begin() + count[a], end = columns.begin() + count[a + 1];
+    std::sort(begin, end);
+    columns_.insert(columns_.end(), begin, std::unique(begin, end));
+    row_offsets_[a + 1] = static_cast<Index>(columns_.size());
   }
-  for (Index a = 0; a < num_nodes; ++a) row_offsets_[a + 1] += row_offsets_[a];
-  values_.assign(pairs.size(), Matrix3::Zero());
+  values_.assign(columns_.size(), Matrix3::Zero());
   ++version_;
 }
 

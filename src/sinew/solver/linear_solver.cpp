@@ -21,10 +21,11 @@ double relative_residual(const SparseMatrix& K, const VectorX& x, const VectorX&
   return nb > 0 ? (K * x - b).norm() / nb : (K * x).norm();
 }
 
-/// CHOLMOD's supernodal LL^T, its OpenMP regions on the calling thread (serial_openmp.hpp). With options.lagged_iterations > 0, a new matrix is not
-/// factorized at once: CG preconditioned by the last good factorization solves with it, and only
-/// when CG does not reach options.lagged_tolerance within that many iterations (or meets
-/// negative curvature) is the matrix factorized (docs/solver.md, "Lagged factorizations").
+/// CHOLMOD's supernodal LL^T, its OpenMP regions on the calling thread (serial_openmp.hpp).
+/// With options.lagged_iterations > 0, a new matrix is not factorized at once: CG preconditioned
+/// by the last good factorization solves with it, and only when CG does not reach
+/// options.lagged_tolerance within that many iterations (or meets negative curvature) is the
+/// matrix factorized (docs/solver.md, "Lagged factorizations").
 class CholmodSolver final : public LinearSolver {
  public:
   explicit CholmodSolver(const LinearSolverOptions& options)
