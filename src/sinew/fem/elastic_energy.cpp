@@ -132,7 +132,9 @@ void ElasticEnergy::add_hessian(const Positions& x, BlockSparseMatrix& H) const 
       material_[t]->evaluate(F, &P, &dPdF);
       if (options_.project_hessians) dPdF = project_to_psd(dPdF);
       const Eigen::Matrix<double, 9, 12> B = deformation_gradient_jacobian(rest_[t].Dm_inv);
-      local[s].noalias() = rest_[t].volume * (B.transpose() * dPdF * B);
+      // Coefficient-wise products: for 12 x 9 x 12 Eigen's general product would pack and block.
+      const Eigen::Matrix<double, 12, 9> BtA = B.transpose().lazyProduct(dPdF);
+      local[s].noalias() = rest_[t].volume * BtA.lazyProduct(B);
     }
   });
   // Gather by rows: each node's row blocks are written by one thread only.
