@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "sinew/contact/dual.hpp"
 #include "sinew/contact/gradient_tape.hpp"
@@ -364,6 +365,19 @@ double tape_hessian(F&& f, PairUnknowns unknowns, PairVector& gradient, PairMatr
   return tape_hessian_of<kPairVariables>(f, 0, gradient, hessian);
 }
 
+/// The tape's Hessian of `kind` for integral(scalar, unknowns) (Exact: with respect to
+/// `unknowns`; Projected: all 21 variables, then projected onto the PSD cone), or nothing for
+/// GaussNewton, which each method forms itself.
+template <class F>
+std::optional<double> tape_hessian_of_kind(F&& integral, PairHessian kind, PairUnknowns unknowns,
+                                           PairVector& gradient, PairMatrix& hessian) {
+  if (kind == PairHessian::GaussNewton) return std::nullopt;
+  const PairUnknowns wanted = kind == PairHessian::Exact ? unknowns : PairUnknowns::All;
+  const double I = tape_hessian([&]<class S>(S s) { return integral(s, wanted); }, wanted, gradient, hessian);
+  if (kind == PairHessian::Projected) hessian = project_to_psd(hessian);
+  return I;
+}
+
 }  // namespace
 
 double area_integral(const PairGeometry& pair, const collision::ClipPolygon& polygon) {
@@ -386,16 +400,8 @@ double area_integral_hessian(const PairGeometry& pair, const collision::ClipPoly
     hessian.setZero();
     return 0;
   }
-  if (kind == PairHessian::Exact) {
-    return tape_hessian(
-        [&]<class S>(S) { return area_integral_t<S>(pair, polygon, unknowns); }, unknowns, gradient, hessian);
-  }
-  if (kind == PairHessian::Projected) {
-    const double I = tape_hessian([&]<class S>(S) { return area_integral_t<S>(pair, polygon); }, PairUnknowns::All,
-                                  gradient, hessian);
-    hessian = project_to_psd(hessian);
-    return I;
-  }
+  const auto integral = [&]<class S>(S, PairUnknowns wanted) { return area_integral_t<S>(pair, polygon, wanted); };
+  if (const auto I = tape_hessian_of_kind(integral, kind, unknowns, gradient, hessian)) return *I;
   // Gauss-Newton: per fan triangle, A/12 (a² + b² + c² + s²) -> A/6 (∇a∇aᵀ + ∇b∇bᵀ + ∇c∇cᵀ + ∇s∇sᵀ)
   // with the areas frozen (and clamped at 0, so the sum stays positive semi-definite).
   hessian.setZero();
@@ -485,16 +491,8 @@ double point_integral_hessian(const PairGeometry& pair, const collision::Colloca
     hessian.setZero();
     return 0;
   }
-  if (kind == PairHessian::Exact) {
-    return tape_hessian(
-        [&]<class S>(S) { return point_integral_t<S>(pair, points, unknowns); }, unknowns, gradient, hessian);
-  }
-  if (kind == PairHessian::Projected) {
-    const double I = tape_hessian([&]<class S>(S) { return point_integral_t<S>(pair, points); }, PairUnknowns::All,
-                                  gradient, hessian);
-    hessian = project_to_psd(hessian);
-    return I;
-  }
+  const auto integral = [&]<class S>(S, PairUnknowns wanted) { return point_integral_t<S>(pair, points, wanted); };
+  if (const auto I = tape_hessian_of_kind(integral, kind, unknowns, gradient, hessian)) return *I;
   hessian.setZero();
   gradient.setZero();
   if (points.count == 0) return 0;
