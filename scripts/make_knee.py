@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Writes examples/knee-flexion.json: the seed's knee flexion (dissertation section 7, paper
-section 6) on a generated right leg, built from the product's own shape generators; with
---thigh muscle, examples/knee-flexion-full-thigh.json, the same leg with a thigh full of muscle.
+"""Writes examples/knee-flexion.json (the main job): the seed's knee flexion (dissertation section 7,
+paper section 6) on a generated right leg with a thigh full of muscle, built from the product's own
+shape generators; with --thigh hull, examples/knee-flexion-hull.json, the earlier main job's leg,
+whose skin-fat wraps a hull round the quadriceps group and leaves voids in the thigh.
 
-Usage: /usr/bin/python3 scripts/make_knee.py [--element-size H] [--increments N] [--thigh hull|muscle]
+Usage: /usr/bin/python3 scripts/make_knee.py [--element-size H] [--increments N] [--thigh muscle|hull]
                                              [--out PATH]
 
 Coordinates in mm, the flexion axis is the y axis (through the centres of the condyles): z up the
@@ -21,30 +22,30 @@ Parts (one deformable body "leg" holding everything bonded together, and the rig
   patella    rigid, free (6 DOF): a ball in front of the groove, held only by its tendons
   ligament   patellar ligament (tendon, Table 2 blue) from the patella to the tuberosity
   tendon     quadriceps tendon (blue) above the patella, then the graded intermediate tissues
-  graded_2   (magenta) and graded_1 (green), then the quadriceps muscle (yellow), in front of
-  graded_1   the femur and rounded to the leg's cross-section
-  muscle
-  skin       skin-fat (Mooney-Rivlin C1 = 5, C2 = 1, a = 50): the leg's cylinder minus a hull
-             4 mm around the femur, the quadriceps group, the patella and the ligament (the
-             seed's "shrink wrap"): 10 mm over the muscles, solid behind the femur and around
-             the tibia, to which it is bonded
-The thigh's upper cross-section (muscle and skin-fat at z = 200) moves only in its plane.
-
---thigh muscle (knee-flexion-full-thigh.json) leaves no voids in the thigh: the hull above wraps
-the quadriceps group more widely than the muscle it holds, leaving up to 20 mm of empty space
-between the femur, the tendon, the graded tissues and the skin, and the thigh has no muscle
-behind or beside the femur. There instead:
+  graded_2   (magenta) and graded_1 (green) in front of the femur, rounded to the leg's
+  graded_1   cross-section
   muscle     from MUSCLE_BASE (the graded tissues' base) up, the muscle fills the thigh inside the
              skin-fat layer in front of, beside and behind the femur (the quadriceps group, the
              vasti, the hamstrings), sliding on the femur across GAP; the graded tissues, listed
              before it, take its front
-  skin       a 10 mm layer round the thigh's muscle, bonded to it; below MUSCLE_BASE it fills the
-             leg round the knee's parts, sliding on the femur, the patella, the ligament and the
-             tendon across GAP, bonded to the tibia. No voids but the sliding gaps and, behind
-             the quadriceps tendon, the suprapatellar pouch (8 mm between the tendon and the
-             femur's gap, where the tendon glides on the femur). A fat pad bonded to the tendon's
-             back there instead is crushed between tendon and femur to J = 0.005 by 150 degrees
-             and costs a third more time (16 mm mesh: 520 s, 22 step cuts, against 386 s, 12).
+  skin       skin-fat (Mooney-Rivlin C1 = 5, C2 = 1, a = 50): a 10 mm layer round the thigh's
+             muscle, bonded to it; below MUSCLE_BASE it fills the leg round the knee's parts,
+             sliding on the femur, the patella, the ligament and the tendon across GAP, bonded to
+             the tibia. No voids but the sliding gaps and, behind the quadriceps tendon, the
+             suprapatellar pouch (8 mm between the tendon and the femur's gap, where the tendon
+             glides on the femur). A fat pad bonded to the tendon's back there instead is crushed
+             between tendon and femur to J = 0.005 by 150 degrees and costs a third more time
+             (16 mm mesh: 520 s, 22 step cuts, against 386 s, 12, on the program of 2026-11-30).
+The thigh's upper cross-section (muscle and skin-fat at z = 200) moves only in its plane.
+
+--thigh hull (knee-flexion-hull.json, the main job until 2026-12-03) is the leg the seed's
+"shrink wrap" gives: the skin-fat is the leg's cylinder minus a hull 4 mm around the femur, the
+quadriceps group, the patella and the ligament, 10 mm over the muscles and solid behind the femur
+and around the tibia. The hull wraps the quadriceps group more widely than the muscle it holds,
+leaving up to 20 mm of empty space between the femur, the tendon, the graded tissues and the
+skin, and the thigh has no muscle behind or beside the femur; its muscle is a block in front of
+the femur from 115 mm up. It is easier to solve (16 mm: 479 Newton iterations and 2 step cuts
+against the full thigh's 926 and 13) and stays as the speed benchmark's reference.
 Contact: the femur against the leg (patella on the trochlea and condyles, muscle and skin-fat on
 the bone) and the leg against itself (skin-fat on the muscle, tendons and patella, and folding
 onto itself behind the knee); bonded parts share nodes and carry no contact between them.
@@ -62,7 +63,7 @@ STIFF_SCALE = 5.0            # penalty factor of the bones and tendons: where tw
                              # (patella on femur, tendon on femur) the penalty is 5x the pair's
 GAP = 4.0                    # sliding gap between the skin-fat and the parts it is not bonded to (mm)
 E = 16.0                     # the tibia's and the leg's axis lie this far in front of the flexion axis
-MUSCLE_BASE = 75.0           # --thigh muscle: the muscle fills the thigh from here up (mm; the graded tissues' base)
+MUSCLE_BASE = 75.0           # the muscle fills the thigh from here up (mm; the graded tissues' base)
 
 
 def cyl(base, axis, radius):
@@ -107,9 +108,9 @@ def rounded(lo, hi, radius):
 
 
 def skin_fat():
-    """The leg's cylinder minus a hull around the femur, the quadriceps and its tendons, the
-    patella and the patellar ligament, GAP away from them (the seed's "shrink wrap" hull): solid
-    skin-fat behind the femur and around the tibia, to which it is bonded."""
+    """--thigh hull: the leg's cylinder minus a hull around the femur, the quadriceps and its
+    tendons, the patella and the patellar ligament, GAP away from them (the seed's "shrink wrap"
+    hull): solid skin-fat behind the femur and around the tibia, to which it is bonded."""
     inner = LEG_RADIUS - SKIN
     hull = {"union": [
         femur(GAP),
@@ -119,14 +120,14 @@ def skin_fat():
 
 
 def thigh_muscle():
-    """--thigh muscle: the thigh inside the skin-fat layer from MUSCLE_BASE up, GAP away from the
-    femur, in front of, beside and behind it."""
+    """The thigh inside the skin-fat layer from MUSCLE_BASE up, GAP away from the femur, in front
+    of, beside and behind it."""
     return {"difference": [cyl([E, 0, MUSCLE_BASE], [0, 0, THIGH - MUSCLE_BASE], LEG_RADIUS - SKIN), femur(GAP)]}
 
 
 def skin_fat_round_muscle():
-    """--thigh muscle: the leg's cylinder minus a hull GAP round the femur, the patella, the
-    ligament and the quadriceps tendon, reaching back to the femur's (the suprapatellar pouch).
+    """The leg's cylinder minus a hull GAP round the femur, the patella, the ligament and the
+    quadriceps tendon, reaching back to the femur's (the suprapatellar pouch).
     The thigh's muscle, listed before it, takes the thigh's inside above MUSCLE_BASE, so there the
     skin-fat is a layer bonded to it; below, it fills the knee round those parts, bonded to the tibia."""
     hull = {"union": [
@@ -136,7 +137,7 @@ def skin_fat_round_muscle():
     return {"difference": [cyl([E, 0, -SHANK], [0, 0, THIGH + SHANK], LEG_RADIUS), hull]}
 
 
-def scene(element_size, increments, thigh="hull"):
+def scene(element_size, increments, thigh="muscle"):
     flexion = 150.0
     leg_parts = [
         {"region": "tibia", "shape": tibia()},
@@ -158,9 +159,13 @@ def scene(element_size, increments, thigh="hull"):
     if thigh == "muscle":
         leg_parts[-2:] = [{"region": "muscle", "shape": thigh_muscle()},
                           {"region": "skin", "shape": skin_fat_round_muscle()}]
-        name = "knee-flexion-full-thigh"
-        description += (" This variant (--thigh muscle) has no voids in the thigh: Table 2's muscle fills it in "
-                        "front of, beside and behind the femur under a 10 mm skin-fat layer bonded to it.")
+        description += (" The thigh has no voids: Table 2's muscle fills it in front of, beside and behind the "
+                        "femur under a 10 mm skin-fat layer bonded to it.")
+    else:
+        name = "knee-flexion-hull"
+        description += (" This variant (--thigh hull, the main job until 2026-12-03) is the seed's shrink wrap: "
+                        "the skin-fat is the leg minus a hull round the femur and the quadriceps group, which "
+                        "leaves voids in the thigh and no muscle behind or beside the femur.")
     return {
         "name": name,
         "description": description,
@@ -210,12 +215,12 @@ def main():
     parser.add_argument("--element-size", type=float, default=9.0,
                         help="target tet edge length (mm); 9 gives 8.9k nodes and 37k tets (the seed: 10k, 40k)")
     parser.add_argument("--increments", type=int, default=50, help="load increments over the 150 degrees")
-    parser.add_argument("--thigh", choices=["hull", "muscle"], default="hull",
-                        help="hull: the main job's thigh (skin-fat over a hull round the quadriceps group); "
-                             "muscle: a thigh full of muscle, no voids but the sliding gaps and the suprapatellar "
-                             "pouch (knee-flexion-full-thigh.json)")
-    parser.add_argument("--out", help="default: examples/knee-flexion.json, with --thigh muscle "
-                                      "examples/knee-flexion-full-thigh.json")
+    parser.add_argument("--thigh", choices=["muscle", "hull"], default="muscle",
+                        help="muscle: the main job's thigh, full of muscle, no voids but the sliding gaps and the "
+                             "suprapatellar pouch; hull: skin-fat over a hull round the quadriceps group, with voids "
+                             "(knee-flexion-hull.json)")
+    parser.add_argument("--out", help="default: examples/knee-flexion.json, with --thigh hull "
+                                      "examples/knee-flexion-hull.json")
     args = parser.parse_args()
     written = scene(args.element_size, args.increments, args.thigh)
     path = pathlib.Path(args.out or pathlib.Path(__file__).resolve().parent.parent / "examples" /

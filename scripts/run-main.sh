@@ -3,9 +3,9 @@
 # examples/knee-flexion.json (the seed's 150-degree flexion of a generated right leg), then
 # renders it. Results in ./out/<scene name>.
 #
-#   bash scripts/run-main.sh           the knee on a 16 mm mesh (4.4k nodes, 17k tets): about 2 minutes
-#   bash scripts/run-main.sh --full    the knee on the scene's own 9 mm mesh (8.9k nodes, 37k tets,
-#                                      like the seed's; about 8 minutes)
+#   bash scripts/run-main.sh           the knee on a 16 mm mesh (4.5k nodes, 19k tets): about 2 minutes
+#   bash scripts/run-main.sh --full    the knee on the scene's own 9 mm mesh (9.1k nodes, 41k tets,
+#                                      like the seed's; about 5 minutes)
 #   bash scripts/run-main.sh SCENE     any other scene, as written
 set -euo pipefail
 cd "$(dirname "$0")/.."

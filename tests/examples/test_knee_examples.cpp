@@ -1,11 +1,11 @@
 /// @file test_knee_examples.cpp
-/// The knee flexion (issue 6, dissertation section 7) on a coarse variant of
-/// examples/knee-flexion.json: 20 mm elements and the first 30 degrees of flexion in 10
-/// increments of 3 degrees, the seed's increment. Asserts what the seed's Figs. 42-43 show:
-/// nothing inverts, penetration stays bounded, and the free patella, pulled by the patellar
+/// The knee flexion (issue 6, dissertation section 7) on a coarse variant of the main job,
+/// examples/knee-flexion.json (a thigh full of muscle): 20 mm elements and the first 30 degrees of
+/// flexion in 10 increments of 3 degrees, the seed's increment. Asserts what the seed's Figs. 42-43
+/// show: nothing inverts, penetration stays bounded, and the free patella, pulled by the patellar
 /// ligament, moves distally and slides round the femur, on the groove, as the flexion grows.
-/// The same on examples/knee-flexion-full-thigh.json (a thigh full of muscle), and that its thigh,
-/// unlike the main job's, has no voids.
+/// The same on examples/knee-flexion-hull.json (the seed's shrink-wrap hull, issue 14), and that the
+/// main job's thigh, unlike the hull leg's, has no voids.
 
 #include <gtest/gtest.h>
 
@@ -126,19 +126,19 @@ TEST(KneeExamples, CoarseFlexionMovesThePatellaDistallyWithoutInversionOrDeepPen
   expect_coarse_flexion_moves_the_patella_distally("knee-flexion");
 }
 
-TEST(KneeExamples, FullThighCoarseFlexionMovesThePatellaDistallyWithoutInversionOrDeepPenetration) {
-  expect_coarse_flexion_moves_the_patella_distally("knee-flexion-full-thigh");
+TEST(KneeExamples, HullLegCoarseFlexionMovesThePatellaDistallyWithoutInversionOrDeepPenetration) {
+  expect_coarse_flexion_moves_the_patella_distally("knee-flexion-hull");
 }
 
-TEST(KneeExamples, FullThighHasNoVoidsWhereTheMainJobsThighHas) {
+TEST(KneeExamples, MainJobsThighHasNoVoidsWhereTheHullLegsHas) {
   const auto main_job = thigh_points_outside_the_leg("knee-flexion");
-  const auto full_thigh = thigh_points_outside_the_leg("knee-flexion-full-thigh");
-  std::printf("[ example  ] thigh points in no tet of the leg: knee-flexion %zu, knee-flexion-full-thigh %zu\n",
-              main_job.size(), full_thigh.size());
-  // The main job's hull round the quadriceps group leaves voids in front of and beside the femur
-  // (the check can fail); the full thigh has none.
-  EXPECT_GT(main_job.size(), 50u);
-  for (const auto& point : full_thigh) ADD_FAILURE() << "void at " << point.transpose();
+  const auto hull_leg = thigh_points_outside_the_leg("knee-flexion-hull");
+  std::printf("[ example  ] thigh points in no tet of the leg: knee-flexion %zu, knee-flexion-hull %zu\n",
+              main_job.size(), hull_leg.size());
+  // The hull round the quadriceps group leaves voids in front of and beside the femur (the check
+  // can fail); the main job's thigh, full of muscle, has none.
+  EXPECT_GT(hull_leg.size(), 50u);
+  for (const auto& point : main_job) ADD_FAILURE() << "void at " << point.transpose();
 }
 
 }  // namespace

@@ -112,7 +112,7 @@ SchemaNode solver_schema() {
                                     "cholmod only: CG iterations, preconditioned by the last Cholesky factorization, "
                                     "tried on each new Newton matrix before it is factorized itself; 0 = factorize "
                                     "every matrix (the default; 20 is 2.1-2.8x faster on a compressed block and 1.24x on the VH "
-                                    "knee's first 45 degrees, slower on the main job: docs/solver.md)")
+                                    "knee's first 45 degrees, slower on the generated knee: docs/solver.md)")
                                 .min(0)
                                 .max(kMaxLinearIterations)
                                 .fallback(linear.lagged_iterations),

@@ -5,8 +5,9 @@
 ///
 /// Why: Debian's CHOLMOD (SuiteSparse 5) opens an OpenMP region with a compiled-in team of four
 /// threads (`CHOLMOD_OMP_NUM_THREADS`) for every small scatter of its supernodal factorization.
-/// Waking and parking that team costs more than the scatter: on the main job's knee the linear
-/// solve took 1.6x longer with it than on one thread (docs/solver.md, "CHOLMOD's OpenMP team").
+/// Waking and parking that team costs more than the scatter: on the knee of
+/// examples/knee-flexion-hull.json the linear solve took 1.6x longer with it than on one thread
+/// (docs/solver.md, "CHOLMOD's OpenMP team").
 /// CHOLMOD's dense kernels run in the BLAS, whose own threads this does not touch.
 ///
 /// How: the OpenMP runtime's max-active-levels is set to 0, so every region opened in the scope
