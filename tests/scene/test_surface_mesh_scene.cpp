@@ -132,6 +132,33 @@ TEST(SurfaceMeshScene, PartHiddenByAnEarlierOneIsReported) {
   EXPECT_THAT(message, HasSubstr("part \"core\" got no elements"));
 }
 
+TEST(SurfaceMeshScene, RemeshedSurfaceMeshesTheSameRegions) {
+  const sinew::testing::TempDir dir;
+  sinew::testing::write_text(dir.path() / "cube.stl", sinew::testing::ascii_stl(sinew::testing::unit_cube()));
+  json scene = cube_scene(dir.path().string());
+  scene["bodies"][0]["mesh"]["surfaces"]["surfaces"]["cube"]["repair"] = {{"remesh_edge_length", 2.0}};
+  const fem::Problem problem = build_problem(parse_scene(scene, dir.path().string()));
+  ASSERT_EQ(problem.mesh.region_names.size(), 2u);
+  double volume = 0;
+  for (Index t = 0; t < problem.mesh.num_tets(); ++t) volume += mesh::signed_volume(problem.mesh.rest, problem.mesh.tets, t);
+  // Remeshing moves vertices in the cube's faces and keeps its sharp edges only roughly.
+  EXPECT_NEAR(volume, 1000.0, 60.0);
+}
+
+TEST(SurfaceMeshScene, RemeshEdgeLengthThatWouldMakeTooManyTrianglesIsRefused) {
+  const sinew::testing::TempDir dir;
+  sinew::testing::write_text(dir.path() / "cube.stl", sinew::testing::ascii_stl(sinew::testing::unit_cube()));
+  json scene = cube_scene(dir.path().string());
+  // 600 mm^2 of surface in triangles of edge 1e-3: about 1.4e9 of them.
+  scene["bodies"][0]["mesh"]["surfaces"]["surfaces"]["cube"]["repair"] = {{"remesh_edge_length", 1e-3}};
+  const std::string message = build_error(scene, dir.path().string());
+  EXPECT_THAT(message, HasSubstr("surface \"cube\" (cube.stl)"));
+  EXPECT_THAT(message, HasSubstr("\"remesh_edge_length\" 0.001 would make about 1.39e+09 triangles"));
+  EXPECT_THAT(message, HasSubstr("choose a longer edge"));
+  scene["bodies"][0]["mesh"]["surfaces"]["surfaces"]["cube"]["repair"] = {{"remesh_edge_length", -1.0}};
+  EXPECT_THAT(build_error(scene, dir.path().string()), HasSubstr("remesh_edge_length"));
+}
+
 TEST(SurfaceMeshScene, TooFineAMeshIsRefusedBeforeMeshing) {
   const sinew::testing::TempDir dir;
   sinew::testing::write_text(dir.path() / "cube.stl", sinew::testing::ascii_stl(sinew::testing::unit_cube()));

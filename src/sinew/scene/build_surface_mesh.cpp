@@ -2,6 +2,7 @@
 
 #include "sinew/scene/build_surface_mesh.hpp"
 
+#include <cmath>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 #include "sinew/core/log.hpp"
 #include "sinew/surface/read_surface.hpp"
 #include "sinew/surface/repair_surface.hpp"
+#include "sinew/surface/surface_checks.hpp"
 
 namespace sinew::scene {
 
@@ -20,6 +22,9 @@ std::string surface_file_path(const SurfaceFileConfig& file, const std::string& 
 }
 
 namespace {
+
+/// Most triangles a remeshed surface may have (the VH skin as read has 107k).
+constexpr double kMaxRemeshedTriangles = 5e6;
 
 std::string describe(const std::string& name, const SurfaceFileConfig& file) {
   std::string text = "surface \"" + name + "\" (" + file.file;
@@ -42,11 +47,24 @@ surface::ClosedSurface load_surface(const std::string& name, const SurfaceFileCo
   read.unit_scale = file.unit_scale;
   read.translation = file.translate;
   surface::SurfaceMesh mesh = surface::read_surface(path.string(), read);
+  if (file.repair && file.repair->remesh_edge_length > 0) {
+    // Equilateral triangles of edge L cover sqrt(3)/4 L^2 each: refuse a target that would make
+    // more triangles than a mesher could use, before CGAL allocates them.
+    const double length = file.repair->remesh_edge_length;
+    const double expected = surface::surface_area(mesh) / (std::sqrt(3.0) / 4 * length * length);
+    if (!(expected <= kMaxRemeshedTriangles))
+      throw InputError(fmt::format("{}: \"remesh_edge_length\" {:g} would make about {:.3g} triangles of its area "
+                                   "{:.6g} (at most {:g}); choose a longer edge",
+                                   what, length, expected, surface::surface_area(mesh), kMaxRemeshedTriangles));
+  }
   if (file.repair) {
     surface::RepairReport report;
     mesh = surface::repair_surface(mesh, *file.repair, &report);
     logger().info("{}: repaired: {} degenerate and {} duplicate triangles dropped, {} holes filled with {} triangles",
                   what, report.degenerate_dropped, report.duplicates_dropped, report.holes_filled, report.triangles_added);
+    if (report.triangles_remeshed > 0)
+      logger().info("{}: remeshed to edges of about {:g}: {} triangles", what, file.repair->remesh_edge_length,
+                    report.triangles_remeshed);
   }
   surface::ClosedSurface closed(mesh, what);
   const std::vector<surface::SelfIntersection> crossings = surface::find_self_intersections(closed.mesh(), 3);

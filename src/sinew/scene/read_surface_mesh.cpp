@@ -95,6 +95,7 @@ SurfaceMeshConfig read_surface_mesh(const json& j, const std::string& path, Read
       options.drop_degenerate = repair.at("drop_degenerate").get<bool>();
       options.drop_duplicates = repair.at("drop_duplicates").get<bool>();
       options.fill_holes = repair.at("fill_holes").get<bool>();
+      options.remesh_edge_length = repair.at("remesh_edge_length").get<double>();
       file.repair = options;
     }
     if (entry.contains("source")) file.source = entry.at("source").get<std::string>();

@@ -59,6 +59,12 @@ SchemaNode surfaces_mesh_schema() {
                                     boolean("drop_degenerate", "drop triangles of zero area").fallback(repair_defaults.drop_degenerate),
                                     boolean("drop_duplicates", "drop repeated triangles").fallback(repair_defaults.drop_duplicates),
                                     boolean("fill_holes", "close every hole with a refined patch").fallback(repair_defaults.fill_holes),
+                                    number("remesh_edge_length",
+                                           "> 0: remesh the triangles isotropically toward this edge length, after "
+                                           "the holes are filled (fewer triangles make meshing faster); 0 keeps them (length)")
+                                        .min(0)
+                                        .max(kMaxLength)
+                                        .fallback(repair_defaults.remesh_edge_length),
                                 }),
                          string("source", "where a user gets the file, printed when it is missing").non_empty(),
                      }))

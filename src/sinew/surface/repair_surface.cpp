@@ -4,6 +4,7 @@
 #include "sinew/surface/repair_surface.hpp"
 
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/intersections.h>
@@ -105,6 +106,13 @@ SurfaceMesh repair_surface(const SurfaceMesh& surface, const RepairOptions& opti
         report.triangles_added += static_cast<Index>(patch.size());
       }
     }
+  }
+  if (options.remesh_edge_length > 0 && !mesh.is_empty()) {
+    // Three rounds, CGAL's default: each splits edges longer than 4/3 of the target, collapses
+    // those shorter than 4/5, flips toward valence 6 and relaxes the vertices in the tangent plane.
+    PMP::isotropic_remeshing(faces(mesh), options.remesh_edge_length, mesh);
+    mesh.collect_garbage();
+    report.triangles_remeshed = static_cast<Index>(mesh.number_of_faces());
   }
   if (report_out != nullptr) *report_out = report;
   return cgal::from_cgal(mesh, surface.name);

@@ -1,7 +1,8 @@
 #pragma once
 /// @file repair_surface.hpp
 /// Repair of a scanned triangle surface before it bounds a region (docs/surface-input.md,
-/// preparation): degenerate and duplicate triangles dropped, holes filled, self-intersections found.
+/// preparation): degenerate and duplicate triangles dropped, holes filled, the triangles remeshed
+/// to a target edge length, self-intersections found.
 
 #include <string>
 #include <vector>
@@ -15,6 +16,10 @@ struct RepairOptions {
   bool drop_degenerate = true;   ///< drop triangles of (near) zero area
   bool drop_duplicates = true;   ///< drop triangles with the same three vertices as an earlier one
   bool fill_holes = true;        ///< close every hole (boundary loop) with a refined patch
+  /// > 0: after the holes are filled, the triangles are remeshed isotropically (CGAL's
+  /// isotropic_remeshing: splits, collapses, flips and tangential smoothing) toward this edge
+  /// length (length); 0 keeps the triangles as they are.
+  double remesh_edge_length = 0;
 };
 
 /// Two triangles of one surface that cross each other, and a point where they do.
@@ -30,6 +35,7 @@ struct RepairReport {
   Index holes_filled = 0;         ///< boundary loops closed
   Index triangles_added = 0;      ///< by hole filling
   Index non_manifold_dropped = 0; ///< triangles that would make an edge shared by more than two
+  Index triangles_remeshed = 0;   ///< triangles after remeshing (0: not remeshed)
 };
 
 /// Returns the repaired copy of `surface`. Never throws for a bad surface; the caller checks

@@ -3,6 +3,7 @@
 #include "sinew/surface/surface_checks.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -30,15 +31,32 @@ SurfaceTopology surface_topology(const SurfaceMesh& mesh) {
   return topology;
 }
 
+namespace {
+
+/// The corners of triangle `t`, in its winding order.
+std::array<Vector3, 3> corners(const SurfaceMesh& mesh, Index t) {
+  return {mesh.vertices.row(mesh.triangles(t, 0)).transpose(), mesh.vertices.row(mesh.triangles(t, 1)).transpose(),
+          mesh.vertices.row(mesh.triangles(t, 2)).transpose()};
+}
+
+}  // namespace
+
 double enclosed_volume(const SurfaceMesh& mesh) {
   double six_volume = 0;
   for (Index t = 0; t < mesh.triangles.rows(); ++t) {
-    const Vector3 a = mesh.vertices.row(mesh.triangles(t, 0)).transpose();
-    const Vector3 b = mesh.vertices.row(mesh.triangles(t, 1)).transpose();
-    const Vector3 c = mesh.vertices.row(mesh.triangles(t, 2)).transpose();
+    const auto [a, b, c] = corners(mesh, t);
     six_volume += a.dot(b.cross(c));
   }
   return six_volume / 6;
+}
+
+double surface_area(const SurfaceMesh& mesh) {
+  double twice_area = 0;
+  for (Index t = 0; t < mesh.triangles.rows(); ++t) {
+    const auto [a, b, c] = corners(mesh, t);
+    twice_area += (b - a).cross(c - a).norm();
+  }
+  return twice_area / 2;
 }
 
 }  // namespace sinew::surface

@@ -24,4 +24,7 @@ SurfaceTopology surface_topology(const SurfaceMesh& mesh);
 /// for a closed surface.
 double enclosed_volume(const SurfaceMesh& mesh);
 
+/// Total area of the triangles, in scene units squared.
+double surface_area(const SurfaceMesh& mesh);
+
 }  // namespace sinew::surface

@@ -23,6 +23,7 @@
 #include "sinew/core/error.hpp"
 #include "sinew/core/stopwatch.hpp"
 #include "sinew/surface/cgal_surface.hpp"
+#include "sinew/surface/surface_checks.hpp"
 
 namespace sinew::surface {
 
@@ -178,17 +179,6 @@ void add_region_surfaces(mesh::TetMesh& result) {
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     result.node_sets[name] = std::move(nodes);
   }
-}
-
-double surface_area(const SurfaceMesh& mesh) {
-  double area = 0;
-  for (Index t = 0; t < mesh.triangles.rows(); ++t) {
-    const Vector3 a = mesh.vertices.row(mesh.triangles(t, 0)).transpose();
-    const Vector3 b = mesh.vertices.row(mesh.triangles(t, 1)).transpose();
-    const Vector3 c = mesh.vertices.row(mesh.triangles(t, 2)).transpose();
-    area += 0.5 * (b - a).cross(c - a).norm();
-  }
-  return area;
 }
 
 }  // namespace
