@@ -159,6 +159,18 @@ TEST(SurfaceMeshScene, RemeshEdgeLengthThatWouldMakeTooManyTrianglesIsRefused) {
   EXPECT_THAT(build_error(scene, dir.path().string()), HasSubstr("remesh_edge_length"));
 }
 
+TEST(SurfaceMeshScene, RemeshEdgeLengthThatCollapsesTheSurfaceIsRefused) {
+  // Edges of 20 on a 10 mm cube: CGAL collapses it to a small polyhedron (about 5 % of its volume).
+  const sinew::testing::TempDir dir;
+  sinew::testing::write_text(dir.path() / "cube.stl", sinew::testing::ascii_stl(sinew::testing::unit_cube()));
+  json scene = cube_scene(dir.path().string());
+  scene["bodies"][0]["mesh"]["surfaces"]["surfaces"]["cube"]["repair"] = {{"remesh_edge_length", 20.0}};
+  const std::string message = build_error(scene, dir.path().string());
+  EXPECT_THAT(message, HasSubstr("surface \"cube\" (cube.stl): remeshing to edges of 20 changed the enclosed volume "
+                                 "from 1000 to"));
+  EXPECT_THAT(message, HasSubstr("choose a shorter \"remesh_edge_length\""));
+}
+
 TEST(SurfaceMeshScene, TooFineAMeshIsRefusedBeforeMeshing) {
   const sinew::testing::TempDir dir;
   sinew::testing::write_text(dir.path() / "cube.stl", sinew::testing::ascii_stl(sinew::testing::unit_cube()));

@@ -91,6 +91,9 @@ TEST(RepairSurface, RemeshesFinerAndCoarserTowardTheTargetEdgeLength) {
                 subdivisions, sphere.triangles.rows(), edge_before, remeshed.triangles.rows(), edge_after, target,
                 enclosed_volume(sphere), enclosed_volume(remeshed));
     EXPECT_EQ(report.triangles_remeshed, remeshed.triangles.rows());
+    EXPECT_TRUE(report.closed_before_remesh);
+    EXPECT_NEAR(report.volume_before_remesh, enclosed_volume(sphere), 1e-9 * enclosed_volume(sphere));
+    EXPECT_NEAR(report.volume_after_remesh, enclosed_volume(remeshed), 1e-9 * enclosed_volume(sphere));
     EXPECT_NEAR(edge_after, target, 0.25 * target);
     EXPECT_TRUE(surface_topology(remeshed).closed());
     EXPECT_NO_THROW(ClosedSurface(remeshed, "remeshed sphere"));

@@ -25,6 +25,8 @@ namespace {
 
 /// Most triangles a remeshed surface may have (the VH skin as read has 107k).
 constexpr double kMaxRemeshedTriangles = 5e6;
+/// Largest relative change of a closed surface's enclosed volume that remeshing may make.
+constexpr double kMaxRemeshVolumeChange = 0.05;
 
 std::string describe(const std::string& name, const SurfaceFileConfig& file) {
   std::string text = "surface \"" + name + "\" (" + file.file;
@@ -62,9 +64,18 @@ surface::ClosedSurface load_surface(const std::string& name, const SurfaceFileCo
     mesh = surface::repair_surface(mesh, *file.repair, &report);
     logger().info("{}: repaired: {} degenerate and {} duplicate triangles dropped, {} holes filled with {} triangles",
                   what, report.degenerate_dropped, report.duplicates_dropped, report.holes_filled, report.triangles_added);
-    if (report.triangles_remeshed > 0)
+    if (report.triangles_remeshed > 0) {
       logger().info("{}: remeshed to edges of about {:g}: {} triangles", what, file.repair->remesh_edge_length,
                     report.triangles_remeshed);
+      // An edge too long for the surface's features collapses them: refuse a changed shape.
+      const double before = report.volume_before_remesh, after = report.volume_after_remesh;
+      if (report.closed_before_remesh && !(std::abs(after - before) <= kMaxRemeshVolumeChange * std::abs(before)))
+        throw InputError(fmt::format("{}: remeshing to edges of {:g} changed the enclosed volume from {:.6g} to {:.6g} "
+                                     "({:+.1f} %, at most {:g} % allowed): the edge is too long for the surface's "
+                                     "features; choose a shorter \"remesh_edge_length\"",
+                                     what, file.repair->remesh_edge_length, before, after,
+                                     100 * (after - before) / before, 100 * kMaxRemeshVolumeChange));
+    }
   }
   surface::ClosedSurface closed(mesh, what);
   const std::vector<surface::SelfIntersection> crossings = surface::find_self_intersections(closed.mesh(), 3);

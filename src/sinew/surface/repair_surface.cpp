@@ -15,6 +15,7 @@
 #include <set>
 
 #include "sinew/surface/cgal_surface.hpp"
+#include "sinew/surface/surface_checks.hpp"
 
 namespace sinew::surface {
 
@@ -110,9 +111,13 @@ SurfaceMesh repair_surface(const SurfaceMesh& surface, const RepairOptions& opti
   if (options.remesh_edge_length > 0 && !mesh.is_empty()) {
     // Three rounds, CGAL's default: each splits edges longer than 4/3 of the target, collapses
     // those shorter than 4/5, flips toward valence 6 and relaxes the vertices in the tangent plane.
+    const SurfaceMesh before = cgal::from_cgal(mesh, surface.name);
+    report.closed_before_remesh = surface_topology(before).closed();
+    report.volume_before_remesh = enclosed_volume(before);
     PMP::isotropic_remeshing(faces(mesh), options.remesh_edge_length, mesh);
     mesh.collect_garbage();
     report.triangles_remeshed = static_cast<Index>(mesh.number_of_faces());
+    report.volume_after_remesh = enclosed_volume(cgal::from_cgal(mesh, surface.name));
   }
   if (report_out != nullptr) *report_out = report;
   return cgal::from_cgal(mesh, surface.name);

@@ -36,6 +36,9 @@ struct RepairReport {
   Index triangles_added = 0;      ///< by hole filling
   Index non_manifold_dropped = 0; ///< triangles that would make an edge shared by more than two
   Index triangles_remeshed = 0;   ///< triangles after remeshing (0: not remeshed)
+  bool closed_before_remesh = false;  ///< the surface was closed when remeshing started
+  double volume_before_remesh = 0;    ///< enclosed volumes before and after remeshing (length^3; see
+  double volume_after_remesh = 0;     ///< enclosed_volume), meaningful when it was closed
 };
 
 /// Returns the repaired copy of `surface`. Never throws for a bad surface; the caller checks
