@@ -206,7 +206,7 @@ def scene(element_size, increments, thigh="muscle"):
         "contact": {"self_contact": True, "pairs": [{"bodies": ["femur", "leg"], "penalty": FEMUR_PENALTY},
                                                      {"bodies": ["leg", "leg"], "penalty": LEG_PENALTY}]},
         # 40 Newton iterations per step, not 25: in the knee's non-convex contact slides Newton often
-        # converges after 25-45 iterations; with 25 the 16 mm main job cut 13 steps and took 926
+        # converges only after 18-45 iterations; with 25 the 16 mm main job cut 13 steps and took 926
         # iterations, with 40 it cut 2 and took 640 (docs/solver.md, "Newton's iteration budget").
         "solver": {"increments": increments, "newton": {"max_iterations": 40}},
         "output": {"vtu": True},
