@@ -9,6 +9,8 @@
 #include "sinew/core/error.hpp"
 #include "sinew/fem/reactions.hpp"
 #include "sinew/io/atomic_file.hpp"
+#include "sinew/io/pvtu.hpp"
+#include "sinew/parallel/ranks.hpp"
 
 namespace sinew::app {
 
@@ -134,11 +136,9 @@ void RunOutput::write_output(int output, double time, const fem::State& state, c
   newton_->flush();
   if (rigid_) rigid_->flush();
   if (!config_.vtu) return;
-  const std::string name = fmt::format("vtu/output_{:04d}.vtu", output);
   io::VtuData data = vtu_data(state);
   data.point_fields.push_back({"velocity", MatrixX(velocity)});
-  io::write_vtu(directory_ + "/" + name, data);
-  series_->add(time, name);
+  series_->add(time, write_dataset(fmt::format("vtu/output_{:04d}", output), data));
 }
 
 void RunOutput::add_multiplier_cells(const solver::StepRecord& step, std::vector<io::CsvTable::Cell>& row) const {
@@ -247,6 +247,41 @@ io::VtuData RunOutput::vtu_data(const fem::State& state) const {
   return data;
 }
 
+std::string RunOutput::write_dataset(const std::string& stem, const io::VtuData& data) const {
+  const int ranks = parallel::size();
+  if (ranks <= 1) {
+    io::write_vtu(directory_ + "/" + stem + ".vtu", data);
+    return stem + ".vtu";
+  }
+  // Each rank writes its share of the cells; a failure anywhere stops every rank at the same
+  // point (a .pvtu is written only when all its pieces are).
+  const std::filesystem::path folder = (std::filesystem::path(directory_) / stem).parent_path();
+  const std::string base = std::filesystem::path(stem).filename().string();
+  const auto piece_name = [&](int rank) { return fmt::format("{}_p{}.vtu", base, rank); };
+  const int rank = parallel::rank();
+  std::string failure;
+  try {
+    const io::VtuData piece =
+        io::vtu_piece(data, share_of(static_cast<std::size_t>(data.tets.rows()), rank, ranks),
+                      share_of(static_cast<std::size_t>(data.triangles.rows()), rank, ranks));
+    const io::WritingOnThisRank writing;
+    io::write_vtu((folder / piece_name(rank)).string(), piece);
+  } catch (const std::exception& e) {
+    failure = e.what();
+  }
+  const int failed_rank = static_cast<int>(parallel::max(failure.empty() ? -1.0 : static_cast<double>(rank)));
+  if (failed_rank >= 0)
+    throw OutputError(!failure.empty()
+                          ? failure
+                          : fmt::format("cannot write the parallel VTU set {}/{}.pvtu: MPI rank {} could not write its "
+                                        "piece {} (that rank prints why)",
+                                        directory_, stem, failed_rank, (folder / piece_name(failed_rank)).string()));
+  std::vector<std::string> pieces;
+  for (int r = 0; r < ranks; ++r) pieces.push_back(piece_name(r));
+  io::write_pvtu(directory_ + "/" + stem + ".pvtu", data, pieces);  // rank 0 only (files_written)
+  return stem + ".pvtu";
+}
+
 void RunOutput::write_state(const std::string& file_name, const fem::State& state) {
   io::write_vtu(directory_ + "/" + file_name, vtu_data(state));
 }
@@ -255,9 +290,7 @@ void RunOutput::write_increment(int increment, int increments, const fem::State&
   if (!config_.vtu) return;
   const int every = std::max(1, config_.every);
   if (increment % every != 0 && increment != increments) return;
-  const std::string name = fmt::format("vtu/increment_{:04d}.vtu", increment);
-  write_state(name, state);
-  series_->add(state.lambda, name);
+  series_->add(state.lambda, write_dataset(fmt::format("vtu/increment_{:04d}", increment), vtu_data(state)));
 }
 
 void RunOutput::finish_summary(nlohmann::json& j, double wall_seconds, const solver::PhaseTimes& times,

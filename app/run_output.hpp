@@ -16,6 +16,9 @@
 ///                          and, in the VTU files, friction_force and friction_slip (|slip| / slip
 ///                          threshold over the step: >= 1 sliding, < 1 sticking) per node
 ///   newton.csv             one row per Newton iteration
+///   vtu/*.pvtu, vtu/*_pN.vtu on N > 1 MPI ranks, each increment (or output) as a parallel VTU set:
+///                          rank N writes piece N (its share of the tets and surface triangles),
+///                          rank 0 the .pvtu that lists them, and sinew.pvd refers to the .pvtu
 ///   last_converged.vtu     on failure or interrupt: the state the run could reach
 ///   checkpoint.cbor        the run's state after an accepted step, for --resume (run_checkpoints.hpp)
 ///   summary.json           status ("solved", "stopped", "output_error", "out_of_memory", "interrupted"),
@@ -97,6 +100,11 @@ class RunOutput {
 
  private:
   io::VtuData vtu_data(const fem::State& state) const;
+  /// Writes `data` as `stem`.vtu (one process), or on N > 1 MPI ranks as a parallel set: every
+  /// rank its piece `stem`_p<rank>.vtu, then rank 0 `stem`.pvtu. Every rank must call it; when a
+  /// rank's piece fails, every rank throws OutputError. Returns the file to add to the series
+  /// (`stem` with its extension, relative to the output directory).
+  std::string write_dataset(const std::string& stem, const io::VtuData& data) const;
   /// The counters of a static or dynamic run into summary.json (`reached`: lambda or time of
   /// `last_state`, the last accepted state).
   void put_counts(nlohmann::json& j, const solver::StepCounts& counts, double reached,

@@ -156,8 +156,42 @@ class Mpi : public ::testing::Test {
       if (fs::exists(serial / "rigid_bodies.csv")) {
         expect_same_table(serial / "rigid_bodies.csv", output / "rigid_bodies.csv", 1e-6);
       }
-      EXPECT_EQ(files_under(output).size(), files_under(serial).size());
+      expect_parallel_vtu_sets(serial, output, n);
     }
+  }
+
+  /// The files of `serial` outside vtu/ are in `output` too, and each vtu/X.vtu of the serial
+  /// run is, in `output` (a run on `n` ranks), a parallel set vtu/X.pvtu of pieces vtu/X_p<r>.vtu
+  /// whose cells add up to the serial file's; sinew.pvd lists the sets.
+  static void expect_parallel_vtu_sets(const fs::path& serial, const fs::path& output, int n) {
+    std::size_t serial_files = 0, datasets = 0;
+    for (const std::string& file : files_under(serial)) {
+      const fs::path path(file);
+      if (path.parent_path() != "vtu") {
+        if (file != "vtu") {
+          ++serial_files;
+          EXPECT_TRUE(fs::exists(output / path)) << file;
+        }
+        continue;
+      }
+      ++datasets;
+      const std::string stem = (path.parent_path() / path.stem()).generic_string();
+      const std::string set = read_text(output / (stem + ".pvtu"));
+      const auto cells = [](const std::string& vtu) {
+        const std::size_t at = vtu.find("NumberOfCells=\"");
+        return at == std::string::npos ? -1L : std::stol(vtu.substr(at + 15));
+      };
+      long piece_cells = 0;
+      for (int r = 0; r < n; ++r) {
+        const std::string piece = path.stem().string() + "_p" + std::to_string(r) + ".vtu";
+        EXPECT_NE(set.find("Source=\"" + piece + "\""), std::string::npos) << stem << ".pvtu lacks " << piece;
+        piece_cells += cells(read_text(output / "vtu" / piece));
+      }
+      EXPECT_EQ(piece_cells, cells(read_text(serial / path))) << stem;
+      EXPECT_NE(read_text(output / "sinew.pvd").find(stem + ".pvtu"), std::string::npos) << stem;
+    }
+    // n pieces and a .pvtu per dataset, plus the vtu folder itself when there is one.
+    EXPECT_EQ(files_under(output).size(), serial_files + datasets * (n + 1) + (datasets > 0 ? 1 : 0));
   }
 
   TempDir directory;

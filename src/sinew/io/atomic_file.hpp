@@ -18,4 +18,17 @@ void write_file_atomically(const std::string& path, std::string_view content);
 void set_files_written(bool written);
 bool files_written();
 
+/// While it lives, this process writes files even where set_files_written(false) switched that
+/// off: an MPI rank writing its own piece of a parallel VTU set (io/pvtu.hpp). Main thread only.
+class WritingOnThisRank {
+ public:
+  WritingOnThisRank() : before_(files_written()) { set_files_written(true); }
+  ~WritingOnThisRank() { set_files_written(before_); }
+  WritingOnThisRank(const WritingOnThisRank&) = delete;
+  WritingOnThisRank& operator=(const WritingOnThisRank&) = delete;
+
+ private:
+  bool before_;
+};
+
 }  // namespace sinew::io

@@ -14,6 +14,7 @@
 #include "sinew/core/error.hpp"
 #include "sinew/io/atomic_file.hpp"
 #include "sinew/io/base64.hpp"
+#include "sinew/io/xml_escape.hpp"
 
 namespace sinew::io {
 
@@ -23,23 +24,6 @@ namespace {
 
 constexpr std::uint8_t kVtkTriangle = 5;
 constexpr std::uint8_t kVtkTetra = 10;
-
-/// `text` with the five XML special characters replaced by entities (for attribute values).
-std::string xml_escape(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 /// Shortest decimal text that reads back to exactly `value`.
 std::string format_double(double value) {

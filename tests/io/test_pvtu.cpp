@@ -1,0 +1,183 @@
+// Parallel VTU sets: the pieces of a dataset cover each cell once with the points and fields it
+// needs, and the .pvtu lists the pieces and declares the arrays they hold.
+
+#include "sinew/io/pvtu.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "io_test_support.hpp"
+#include "sinew/core/error.hpp"
+
+namespace sinew::io {
+namespace {
+
+using testing::read_text;
+using testing::scan_attributes;
+using testing::scan_data_arrays;
+using testing::TempDir;
+
+/// A bar of 6 tets over 12 nodes (three cubes' worth of corners in a row) and 4 triangles, with
+/// a vector point field, a tensor-free scalar cell field and an integer cell field whose values
+/// name their cell.
+VtuData bar() {
+  VtuData data;
+  data.points.resize(12, 3);
+  for (int i = 0; i < 12; ++i) data.points.row(i) << i / 4, (i % 4) / 2, i % 2;
+  data.tets.resize(6, 4);
+  data.tets << 0, 1, 2, 4,  //
+      1, 2, 3, 5,           //
+      4, 5, 6, 8,           //
+      5, 6, 7, 9,           //
+      8, 9, 10, 11,         //
+      2, 3, 6, 7;
+  data.triangles.resize(4, 3);
+  data.triangles << 0, 1, 2,  //
+      8, 9, 10,               //
+      1, 3, 5,                //
+      9, 11, 10;
+  Eigen::MatrixXd displacement(12, 3);
+  for (int i = 0; i < 12; ++i) displacement.row(i) << 0.5 * i, -1.0 * i, 2.0 + i;
+  data.point_fields = {{"displacement", displacement}};
+  Eigen::MatrixXd J(10, 1);
+  IndexVector cell_id(10);
+  for (int c = 0; c < 10; ++c) {
+    J(c, 0) = 1.0 + 0.01 * c;
+    cell_id[c] = 100 + c;
+  }
+  data.cell_fields = {{"J", J}};
+  data.int_cell_fields = {{"cell", cell_id}};
+  return data;
+}
+
+TEST(VtuPiece, PiecesCoverEveryCellOnceWithThePointsAndFieldsTheyUse) {
+  const VtuData whole = bar();
+  for (const int parts : {1, 2, 3, 4}) {
+    SCOPED_TRACE(std::to_string(parts) + " pieces");
+    std::multiset<Index> cells_seen;
+    for (int part = 0; part < parts; ++part) {
+      const VtuData piece = vtu_piece(whole, share_of(6, part, parts), share_of(4, part, parts));
+      const ItemRange tets = share_of(6, part, parts), triangles = share_of(4, part, parts);
+      ASSERT_EQ(piece.tets.rows(), static_cast<Eigen::Index>(tets.end - tets.begin));
+      ASSERT_EQ(piece.triangles.rows(), static_cast<Eigen::Index>(triangles.end - triangles.begin));
+      // Each piece point is a point of the whole: find which, by its displacement (unique here).
+      std::vector<Index> original(static_cast<std::size_t>(piece.points.rows()));
+      for (Eigen::Index v = 0; v < piece.points.rows(); ++v) {
+        original[static_cast<std::size_t>(v)] = static_cast<Index>(piece.point_fields[0].values(v, 0) / 0.5 + 0.5);
+        EXPECT_EQ(piece.points.row(v), whole.points.row(original[static_cast<std::size_t>(v)]));
+        EXPECT_EQ(piece.point_fields[0].values.row(v), whole.point_fields[0].values.row(original[static_cast<std::size_t>(v)]));
+        if (v > 0) {
+          EXPECT_LT(original[static_cast<std::size_t>(v - 1)], original[static_cast<std::size_t>(v)]);
+        }
+      }
+      // The cells are the whole's, corner for corner, with their own field values; every piece
+      // point is used by a cell.
+      std::set<Index> used;
+      for (Eigen::Index t = 0; t < piece.tets.rows(); ++t)
+        for (int c = 0; c < 4; ++c) {
+          EXPECT_EQ(original[static_cast<std::size_t>(piece.tets(t, c))],
+                    whole.tets(static_cast<Eigen::Index>(tets.begin) + t, c));
+          used.insert(piece.tets(t, c));
+        }
+      for (Eigen::Index f = 0; f < piece.triangles.rows(); ++f)
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_EQ(original[static_cast<std::size_t>(piece.triangles(f, c))],
+                    whole.triangles(static_cast<Eigen::Index>(triangles.begin) + f, c));
+          used.insert(piece.triangles(f, c));
+        }
+      EXPECT_EQ(used.size(), static_cast<std::size_t>(piece.points.rows()));
+      const IndexVector& ids = piece.int_cell_fields.at(0).second;
+      ASSERT_EQ(ids.size(), piece.tets.rows() + piece.triangles.rows());
+      for (Eigen::Index c = 0; c < ids.size(); ++c) {
+        cells_seen.insert(ids[c]);
+        EXPECT_DOUBLE_EQ(piece.cell_fields[0].values(c, 0), 1.0 + 0.01 * static_cast<double>(ids[c] - 100));
+        // Tets first, then triangles: a piece's triangle rows name whole cells 106..109.
+        EXPECT_EQ(ids[c] >= 106, c >= piece.tets.rows());
+      }
+    }
+    std::multiset<Index> every_cell;
+    for (Index c = 100; c < 110; ++c) every_cell.insert(c);
+    EXPECT_EQ(cells_seen, every_cell);
+  }
+}
+
+TEST(VtuPiece, ACellOutsideThePointsOrAFieldOfTheWrongLengthIsAnError) {
+  VtuData broken = bar();
+  broken.tets(3, 2) = 12;
+  EXPECT_THROW(
+      {
+        try {
+          vtu_piece(broken, {0, 6}, {0, 4});
+        } catch (const Error& e) {
+          EXPECT_NE(std::string(e.what()).find("point 12 of 12"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      Error);
+  VtuData short_field = bar();
+  short_field.cell_fields[0].values.conservativeResize(9, 1);
+  EXPECT_THROW(
+      {
+        try {
+          vtu_piece(short_field, {0, 3}, {0, 2});
+        } catch (const Error& e) {
+          EXPECT_NE(std::string(e.what()).find("'J' has 9 rows for 10 cells"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      Error);
+}
+
+TEST(Pvtu, ListsThePiecesAndDeclaresTheArraysTheyHold) {
+  TempDir directory;
+  const VtuData whole = bar();
+  std::vector<std::string> pieces;
+  for (int part = 0; part < 3; ++part) {
+    pieces.push_back("set_p" + std::to_string(part) + ".vtu");
+    write_vtu((directory.path() / pieces.back()).string(),
+              vtu_piece(whole, share_of(6, part, 3), share_of(4, part, 3)));
+  }
+  const auto path = directory.path() / "set.pvtu";
+  write_pvtu(path.string(), whole, pieces);
+  const std::string xml = read_text(path);
+  EXPECT_NE(xml.find("<VTKFile type=\"PUnstructuredGrid\""), std::string::npos);
+  EXPECT_NE(xml.find("header_type=\"UInt64\""), std::string::npos);
+
+  // Every <Piece Source=...> in order.
+  std::vector<std::string> sources;
+  for (std::size_t at = xml.find("<Piece "); at != std::string::npos; at = xml.find("<Piece ", at + 1))
+    sources.push_back(scan_attributes(xml.substr(at, xml.find('>', at) - at)).at("Source"));
+  EXPECT_EQ(sources, pieces);
+
+  // Each declaration matches the array of that name in a piece: type and components.
+  const std::vector<testing::ScannedArray> piece_arrays =
+      scan_data_arrays(read_text(directory.path() / pieces[1]));
+  std::size_t declared = 0;
+  for (std::size_t at = xml.find("<PDataArray "); at != std::string::npos; at = xml.find("<PDataArray ", at + 1)) {
+    const auto attributes = scan_attributes(xml.substr(at, xml.find('>', at) - at));
+    bool found = false;
+    for (const auto& array : piece_arrays)
+      if (array.attributes.at("Name") == attributes.at("Name")) {
+        found = true;
+        EXPECT_EQ(array.attributes.at("type"), attributes.at("type")) << attributes.at("Name");
+        EXPECT_EQ(array.attributes.at("NumberOfComponents"), attributes.at("NumberOfComponents")) << attributes.at("Name");
+      }
+    EXPECT_TRUE(found) << attributes.at("Name");
+    ++declared;
+  }
+  EXPECT_EQ(declared, 4u);  // Points, displacement, J, cell
+}
+
+TEST(Pvtu, NoPiecesOrAnUnnamedPieceIsAnErrorAndNothingIsWritten) {
+  TempDir directory;
+  const auto path = directory.path() / "set.pvtu";
+  EXPECT_THROW(write_pvtu(path.string(), bar(), {}), Error);
+  EXPECT_THROW(write_pvtu(path.string(), bar(), {"a.vtu", ""}), Error);
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+}  // namespace
+}  // namespace sinew::io
