@@ -10,6 +10,7 @@
 #include "sinew/fem/reactions.hpp"
 #include "sinew/io/atomic_file.hpp"
 #include "sinew/io/pvtu.hpp"
+#include "sinew/parallel/partition.hpp"
 #include "sinew/parallel/ranks.hpp"
 
 namespace sinew::app {
@@ -253,17 +254,23 @@ std::string RunOutput::write_dataset(const std::string& stem, const io::VtuData&
     io::write_vtu(directory_ + "/" + stem + ".vtu", data);
     return stem + ".vtu";
   }
-  // Each rank writes its share of the cells; a failure anywhere stops every rank at the same
-  // point (a .pvtu is written only when all its pieces are).
+  // Each rank writes the cells it owns (the tets of its part of the mesh, Model::tet_owner, and
+  // the triangles whose first node it owns); a failure anywhere stops every rank at the same point
+  // (a .pvtu is written only when all its pieces are).
   const std::filesystem::path folder = (std::filesystem::path(directory_) / stem).parent_path();
   const std::string base = std::filesystem::path(stem).filename().string();
   const auto piece_name = [&](int rank) { return fmt::format("{}_p{}.vtu", base, rank); };
   const int rank = parallel::rank();
   std::string failure;
   try {
-    const io::VtuData piece =
-        io::vtu_piece(data, share_of(static_cast<std::size_t>(data.tets.rows()), rank, ranks),
-                      share_of(static_cast<std::size_t>(data.triangles.rows()), rank, ranks));
+    const std::vector<int>& tet_owner = model_.tet_owner;
+    const std::vector<int> node_owner = parallel::node_owners(data.tets, tet_owner, data.points.rows());
+    std::vector<Index> tets, triangles;
+    for (Index t = 0; t < data.tets.rows(); ++t)
+      if (tet_owner.at(static_cast<std::size_t>(t)) == rank) tets.push_back(t);
+    for (Index f = 0; f < data.triangles.rows(); ++f)
+      if (node_owner.at(static_cast<std::size_t>(data.triangles(f, 0))) == rank) triangles.push_back(f);
+    const io::VtuData piece = io::vtu_piece(data, tets, triangles);
     const io::WritingOnThisRank writing;
     io::write_vtu((folder / piece_name(rank)).string(), piece);
   } catch (const std::exception& e) {

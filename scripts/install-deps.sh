@@ -12,6 +12,7 @@ PACKAGES=(
   libgmsh-dev gmsh       # Gmsh C++ API: OpenCASCADE geometry, meshing, .msh reading
   libtbb-dev             # parallel assembly
   libpetsc-real-dev libopenmpi-dev  # PETSc (MUMPS, hypre, PT-Scotch) over OpenMPI: the petsc-gamg and petsc-mumps solvers
+  libscotch-dev          # Scotch, whose random generator the mesh partition resets (parallel/partition.cpp)
   libassimp-dev          # surface meshes in: STL, OBJ, PLY, glTF/GLB
   libcgal-dev            # surfaces to meshes: repair, inside/distance queries, Mesh_3 tetrahedralization
   nlohmann-json3-dev     # scene files

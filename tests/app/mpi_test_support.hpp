@@ -103,9 +103,9 @@ inline void expect_same_table(const fs::path& expected, const fs::path& actual, 
 
 /// How closely expect_same_runs asks the runs to agree.
 struct SameRunsOptions {
-  /// On a long path round-off may decide whether a step's residual meets the tolerance one
-  /// iteration earlier or later; then a step may take one Newton iteration more or less and the
-  /// run 1 % more or less in all, while everything else still agrees to 1e-6.
+  /// On a long path round-off may decide whether a step's residual meets the tolerance an
+  /// iteration earlier or later; then a step may take up to two Newton iterations more or less and
+  /// the run 1 % more or less in all, while everything else still agrees to 1e-6.
   bool iterations_may_differ = false;
 };
 
@@ -152,7 +152,7 @@ class Mpi : public ::testing::Test {
         }
         EXPECT_EQ(summary.at(key), reference.at(key)) << key;
       }
-      expect_same_table(serial / "steps.csv", output / "steps.csv", 1e-6, options.iterations_may_differ ? 1 : 0);
+      expect_same_table(serial / "steps.csv", output / "steps.csv", 1e-6, options.iterations_may_differ ? 2 : 0);
       if (fs::exists(serial / "rigid_bodies.csv")) {
         expect_same_table(serial / "rigid_bodies.csv", output / "rigid_bodies.csv", 1e-6);
       }

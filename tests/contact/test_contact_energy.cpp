@@ -1,5 +1,6 @@
 #include "sinew/contact/contact_energy.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "sinew/core/error.hpp"
 
@@ -73,17 +75,20 @@ TEST_P(ContactEnergyMethods, ExactHessianMatchesDifferencesOfTheGradient) {
 }
 
 TEST_P(ContactEnergyMethods, SharesOfThePairsSumToTheWholeEnergy) {
-  // What the ranks of a run on several processes evaluate (docs/mpi.md): each a contiguous share
-  // of the pair list; their values, gradients and Hessians add up to the whole term's.
+  // What the ranks of a run on several processes evaluate (docs/mpi.md): each the pairs whose tet
+  // it owns; their values, gradients and Hessians add up to the whole term's.
   const auto boxes = st::two_boxes(2, Vector3(0.6, 0.3, 0.2), 0.3, 5.0);
   ContactEnergy whole(boxes.geometry, {GetParam(), PairHessian::Exact});
   const Evaluated all = evaluate(whole, boxes.x);
   ASSERT_GT(whole.active_pairs().size(), 20u);
+  const auto num_tets = static_cast<std::size_t>(boxes.geometry.tets.rows());
   for (int parts : {2, 3, 7}) {
+    std::vector<int> owner(num_tets);
+    for (std::size_t t = 0; t < num_tets; ++t) owner[t] = static_cast<int>((t * 7 / 3) % static_cast<std::size_t>(parts));
     Evaluated sum{0, NodalVectors::Zero(boxes.x.rows(), 3), MatrixX::Zero(all.hessian.rows(), all.hessian.cols())};
     for (int part = 0; part < parts; ++part) {
       ContactEnergy share(boxes.geometry, {GetParam(), PairHessian::Exact});
-      share.set_share(part, parts);
+      share.set_share(owner, part);
       const Evaluated e = evaluate(share, boxes.x);
       EXPECT_LT(e.value, all.value) << "part " << part << " of " << parts << " holds every pair";
       sum.value += e.value;
@@ -94,6 +99,9 @@ TEST_P(ContactEnergyMethods, SharesOfThePairsSumToTheWholeEnergy) {
     EXPECT_LT((sum.gradient - all.gradient).norm(), 1e-12 * all.gradient.norm()) << parts << " parts";
     EXPECT_LT((sum.hessian - all.hessian).norm(), 1e-12 * all.hessian.norm()) << parts << " parts";
   }
+  ContactEnergy share(boxes.geometry, {GetParam(), PairHessian::Exact});
+  EXPECT_THAT([&] { share.set_share(std::vector<int>(num_tets + 1, 0), 0); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr("tet owners for")));
 }
 
 TEST_P(ContactEnergyMethods, GaussNewtonHessianIsPositiveSemiDefinite) {

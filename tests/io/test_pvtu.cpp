@@ -53,16 +53,25 @@ VtuData bar() {
   return data;
 }
 
+/// The cells k of 0..count-1 with (k * 5 + 1) % parts == part, in decreasing order: pieces that
+/// are neither contiguous nor in the whole's order, as a mesh partition gives.
+std::vector<Index> cells_of(Index count, int part, int parts) {
+  std::vector<Index> cells;
+  for (Index k = count - 1; k >= 0; --k)
+    if ((k * 5 + 1) % parts == part) cells.push_back(k);
+  return cells;
+}
+
 TEST(VtuPiece, PiecesCoverEveryCellOnceWithThePointsAndFieldsTheyUse) {
   const VtuData whole = bar();
   for (const int parts : {1, 2, 3, 4}) {
     SCOPED_TRACE(std::to_string(parts) + " pieces");
     std::multiset<Index> cells_seen;
     for (int part = 0; part < parts; ++part) {
-      const VtuData piece = vtu_piece(whole, share_of(6, part, parts), share_of(4, part, parts));
-      const ItemRange tets = share_of(6, part, parts), triangles = share_of(4, part, parts);
-      ASSERT_EQ(piece.tets.rows(), static_cast<Eigen::Index>(tets.end - tets.begin));
-      ASSERT_EQ(piece.triangles.rows(), static_cast<Eigen::Index>(triangles.end - triangles.begin));
+      const std::vector<Index> tets = cells_of(6, part, parts), triangles = cells_of(4, part, parts);
+      const VtuData piece = vtu_piece(whole, tets, triangles);
+      ASSERT_EQ(piece.tets.rows(), static_cast<Eigen::Index>(tets.size()));
+      ASSERT_EQ(piece.triangles.rows(), static_cast<Eigen::Index>(triangles.size()));
       // Each piece point is a point of the whole: find which, by its displacement (unique here).
       std::vector<Index> original(static_cast<std::size_t>(piece.points.rows()));
       for (Eigen::Index v = 0; v < piece.points.rows(); ++v) {
@@ -78,14 +87,13 @@ TEST(VtuPiece, PiecesCoverEveryCellOnceWithThePointsAndFieldsTheyUse) {
       std::set<Index> used;
       for (Eigen::Index t = 0; t < piece.tets.rows(); ++t)
         for (int c = 0; c < 4; ++c) {
-          EXPECT_EQ(original[static_cast<std::size_t>(piece.tets(t, c))],
-                    whole.tets(static_cast<Eigen::Index>(tets.begin) + t, c));
+          EXPECT_EQ(original[static_cast<std::size_t>(piece.tets(t, c))], whole.tets(tets[static_cast<std::size_t>(t)], c));
           used.insert(piece.tets(t, c));
         }
       for (Eigen::Index f = 0; f < piece.triangles.rows(); ++f)
         for (int c = 0; c < 3; ++c) {
           EXPECT_EQ(original[static_cast<std::size_t>(piece.triangles(f, c))],
-                    whole.triangles(static_cast<Eigen::Index>(triangles.begin) + f, c));
+                    whole.triangles(triangles[static_cast<std::size_t>(f)], c));
           used.insert(piece.triangles(f, c));
         }
       EXPECT_EQ(used.size(), static_cast<std::size_t>(piece.points.rows()));
@@ -93,6 +101,9 @@ TEST(VtuPiece, PiecesCoverEveryCellOnceWithThePointsAndFieldsTheyUse) {
       ASSERT_EQ(ids.size(), piece.tets.rows() + piece.triangles.rows());
       for (Eigen::Index c = 0; c < ids.size(); ++c) {
         cells_seen.insert(ids[c]);
+        // In the piece's order: its tets, then its triangles.
+        const std::size_t k = static_cast<std::size_t>(c);
+        EXPECT_EQ(ids[c], c < piece.tets.rows() ? 100 + tets[k] : 106 + triangles[k - tets.size()]);
         EXPECT_DOUBLE_EQ(piece.cell_fields[0].values(c, 0), 1.0 + 0.01 * static_cast<double>(ids[c] - 100));
         // Tets first, then triangles: a piece's triangle rows name whole cells 106..109.
         EXPECT_EQ(ids[c] >= 106, c >= piece.tets.rows());
@@ -104,14 +115,19 @@ TEST(VtuPiece, PiecesCoverEveryCellOnceWithThePointsAndFieldsTheyUse) {
   }
 }
 
-TEST(VtuPiece, ACellOutsideThePointsOrAFieldOfTheWrongLengthIsAnError) {
+TEST(VtuPiece, ACellOutsideThePointsACellNotInTheWholeOrAFieldOfTheWrongLengthIsAnError) {
   VtuData broken = bar();
   broken.tets(3, 2) = 12;
-  EXPECT_THAT([&] { vtu_piece(broken, {0, 6}, {0, 4}); },
+  EXPECT_THAT([&] { vtu_piece(broken, {0, 1, 2, 3, 4, 5}, {0, 1, 2, 3}); },
               ::testing::ThrowsMessage<Error>(::testing::HasSubstr("point 12 of 12")));
+  const VtuData whole = bar();
+  EXPECT_THAT([&] { vtu_piece(whole, {0, 6}, {}); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr("tet 6 of 6")));
+  EXPECT_THAT([&] { vtu_piece(whole, {}, {-1}); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr("triangle -1 of 4")));
   VtuData short_field = bar();
   short_field.cell_fields[0].values.conservativeResize(9, 1);
-  EXPECT_THAT([&] { vtu_piece(short_field, {0, 3}, {0, 2}); },
+  EXPECT_THAT([&] { vtu_piece(short_field, {0, 1, 2}, {0, 1}); },
               ::testing::ThrowsMessage<Error>(::testing::HasSubstr("'J' has 9 rows for 10 cells")));
 }
 
@@ -122,7 +138,7 @@ TEST(Pvtu, ListsThePiecesAndDeclaresTheArraysTheyHold) {
   for (int part = 0; part < 3; ++part) {
     pieces.push_back("set_p" + std::to_string(part) + ".vtu");
     write_vtu((directory.path() / pieces.back()).string(),
-              vtu_piece(whole, share_of(6, part, 3), share_of(4, part, 3)));
+              vtu_piece(whole, cells_of(6, part, 3), cells_of(4, part, 3)));
   }
   const auto path = directory.path() / "set.pvtu";
   write_pvtu(path.string(), whole, pieces);

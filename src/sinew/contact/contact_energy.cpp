@@ -13,19 +13,24 @@
 
 namespace sinew::contact {
 
-double contact_energy_value(const CollisionSet& collisions, const Positions& x, ItemRange which) {
+double contact_energy_value(const CollisionSet& collisions, const Positions& x, const std::vector<std::size_t>& which) {
   if (collisions.overflowed()) return std::numeric_limits<double>::infinity();
   const auto& pairs = collisions.pairs();
   const PairIntegrator& integrator = collisions.integrator();
-  const std::size_t first = std::min(which.begin, pairs.size()), last = std::min(which.end, pairs.size());
-  std::vector<double> values(last - first);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 64), [&](const auto& range) {
+  std::vector<double> values(which.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 64), [&](const auto& range) {
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
-      const ActivePair& p = pairs[k];
-      values[k - first] = 0.5 * p.penalty * integrator.integral(collisions.pair_geometry_at(x, p), p.support);
+      const ActivePair& p = pairs.at(which[k]);
+      values[k] = 0.5 * p.penalty * integrator.integral(collisions.pair_geometry_at(x, p), p.support);
     }
   });
   return std::accumulate(values.begin(), values.end(), 0.0);
+}
+
+double contact_energy_value(const CollisionSet& collisions, const Positions& x) {
+  std::vector<std::size_t> all(collisions.pairs().size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  return contact_energy_value(collisions, x, all);
 }
 
 PairVector pair_energy_gradient(const CollisionSet& collisions, const ActivePair& pair, const Positions& x) {
@@ -52,13 +57,25 @@ bool ContactEnergy::is_valid(const Positions& x) const {
   return !collisions_.overflowed();
 }
 
-ItemRange ContactEnergy::pair_share() const {
-  return share_of(collisions_.pairs().size(), share_part_, share_parts_);
+void ContactEnergy::set_share(std::vector<int> tet_owner, int part) {
+  if (!tet_owner.empty() && tet_owner.size() != static_cast<std::size_t>(geometry().tets.rows()))
+    throw Error(fmt::format("contact: {} tet owners for {} tets", tet_owner.size(), geometry().tets.rows()));
+  tet_owner_ = std::move(tet_owner);
+  share_part_ = part;
+}
+
+std::vector<std::size_t> ContactEnergy::shared_pairs() const {
+  const auto& pairs = collisions_.pairs();
+  std::vector<std::size_t> mine;
+  mine.reserve(pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k)
+    if (tet_owner_.empty() || tet_owner_[static_cast<std::size_t>(pairs[k].tet)] == share_part_) mine.push_back(k);
+  return mine;
 }
 
 double ContactEnergy::value(const Positions& x) const {
   require_current(x);
-  return contact_energy_value(collisions_, x, pair_share());
+  return contact_energy_value(collisions_, x, shared_pairs());
 }
 
 void ContactEnergy::add_gradient(const Positions& x, NodalVectors& grad) const {
@@ -68,16 +85,16 @@ void ContactEnergy::add_gradient(const Positions& x, NodalVectors& grad) const {
                             "overlap far beyond what contact can resolve",
                             collisions_.times().candidates));
   const auto& pairs = collisions_.pairs();
-  const ItemRange mine = pair_share();
-  std::vector<PairVector> gradients(mine.end - mine.begin);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(mine.begin, mine.end, 64), [&](const auto& range) {
+  const std::vector<std::size_t> mine = shared_pairs();
+  std::vector<PairVector> gradients(mine.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mine.size(), 64), [&](const auto& range) {
     for (std::size_t k = range.begin(); k != range.end(); ++k)
-      gradients[k - mine.begin] = pair_energy_gradient(collisions_, pairs[k], x);
+      gradients[k] = pair_energy_gradient(collisions_, pairs[mine[k]], x);
   });
-  for (std::size_t k = mine.begin; k < mine.end; ++k) {
-    const auto nodes = collisions_.nodes(pairs[k]);
+  for (std::size_t k = 0; k < mine.size(); ++k) {
+    const auto nodes = collisions_.nodes(pairs[mine[k]]);
     for (std::size_t i = 0; i < nodes.size(); ++i)
-      grad.row(nodes[i]) += gradients[k - mine.begin].segment<3>(3 * static_cast<Index>(i)).transpose();
+      grad.row(nodes[i]) += gradients[k].segment<3>(3 * static_cast<Index>(i)).transpose();
   }
 }
 
@@ -92,15 +109,15 @@ void ContactEnergy::add_hessian(const Positions& x, BlockSparseMatrix& H) const 
   // In chunks: pair Hessians and their block indices in parallel, then a serial scatter (which
   // is cheap), so memory stays bounded by the chunk.
   constexpr std::size_t kChunk = 2048;
-  const ItemRange mine = pair_share();
-  std::vector<PairMatrix> hessians(std::min(kChunk, mine.end - mine.begin));
+  const std::vector<std::size_t> mine = shared_pairs();
+  std::vector<PairMatrix> hessians(std::min(kChunk, mine.size()));
   std::vector<std::array<Index, 49>> blocks(hessians.size());
-  for (std::size_t begin = mine.begin; begin < mine.end; begin += kChunk) {
-    const std::size_t end = std::min(mine.end, begin + kChunk);
+  for (std::size_t begin = 0; begin < mine.size(); begin += kChunk) {
+    const std::size_t end = std::min(mine.size(), begin + kChunk);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 16), [&](const auto& range) {
       PairVector gradient;
       for (std::size_t k = range.begin(); k != range.end(); ++k) {
-        const ActivePair& p = pairs[k];
+        const ActivePair& p = pairs[mine[k]];
         PairMatrix& hessian = hessians[k - begin];
         integrator.integral_hessian(collisions_.pair_geometry_at(x, p), p.support, options_.hessian,
                                     pair_unknowns(collisions_.geometry(), p.triangle, p.tet), gradient, hessian);

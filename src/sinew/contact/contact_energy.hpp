@@ -23,7 +23,6 @@
 #include "sinew/contact/collision_set.hpp"
 #include "sinew/contact/contact_geometry.hpp"
 #include "sinew/core/energy.hpp"
-#include "sinew/core/share.hpp"
 
 namespace sinew::contact {
 
@@ -68,13 +67,11 @@ class ContactEnergy final : public Energy {
 
   /// The collision set at the last update() (pairs, pattern, times).
   const CollisionSet& collisions() const { return collisions_; }
-  /// On several ranks (docs/mpi.md): value(), add_gradient() and add_hessian() take only the
-  /// pairs of share `part` of `parts` (share_of over the pair list, which is the same on every
-  /// rank); collision detection, validity and the pattern stay whole. 0 of 1 (the default): all.
-  void set_share(int part, int parts) {
-    share_part_ = part;
-    share_parts_ = parts;
-  }
+  /// On several ranks (docs/mpi.md, "Who owns what"): value(), add_gradient() and add_hessian()
+  /// take only the pairs whose tet `tet_owner` (#T of the geometry, a rank per tet) gives to
+  /// `part`; collision detection, validity and the pattern stay whole. Empty (the default): all.
+  /// Throws sinew::Error when `tet_owner` is neither empty nor one per tet.
+  void set_share(std::vector<int> tet_owner, int part);
   /// The active (triangle, tet) pairs at the last update(), in the broad phase's order.
   std::vector<std::pair<Index, Index>> active_pairs() const { return collisions_.pair_indices(); }
   const ContactGeometry& geometry() const { return collisions_.geometry(); }
@@ -88,19 +85,20 @@ class ContactEnergy final : public Energy {
  private:
   /// Throws std::logic_error unless x is the configuration of the last update().
   void require_current(const Positions& x) const;
-  /// The pairs this share evaluates (all of them by default).
-  ItemRange pair_share() const;
+  /// The indices into the pair list of the pairs this share evaluates (all of them by default).
+  std::vector<std::size_t> shared_pairs() const;
 
   ContactOptions options_;
   CollisionSet collisions_;
-  int share_part_ = 0, share_parts_ = 1;
+  std::vector<int> tet_owner_;  ///< #T or empty (every pair is this share's)
+  int share_part_ = 0;
 };
 
 /// Ec (force × L) of the pairs of `collisions` at x (#V x 3), which must be the set's current
 /// positions; +inf when the set overflowed. Pair energies are summed in the set's order.
-/// `pairs`: the pairs to sum (default: all).
-double contact_energy_value(const CollisionSet& collisions, const Positions& x,
-                            ItemRange pairs = {0, static_cast<std::size_t>(-1)});
+/// `which`: the indices into the set's pair list of the pairs to sum (the overload without: all).
+double contact_energy_value(const CollisionSet& collisions, const Positions& x, const std::vector<std::size_t>& which);
+double contact_energy_value(const CollisionSet& collisions, const Positions& x);
 
 /// The gradient (force) of one pair's energy (ε/2) I with respect to its 21 local variables
 /// (pair_integral.hpp), at positions x (#V x 3).

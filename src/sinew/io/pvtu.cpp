@@ -27,13 +27,15 @@ void declare(std::string& xml, const char* type, const std::string& name, Eigen:
 
 }  // namespace
 
-VtuData vtu_piece(const VtuData& whole, ItemRange tets, ItemRange triangles) {
-  const auto num_tets = static_cast<std::size_t>(whole.tets.rows());
-  const auto num_triangles = static_cast<std::size_t>(whole.triangles.rows());
-  tets.end = std::min(tets.end, num_tets);
-  tets.begin = std::min(tets.begin, tets.end);
-  triangles.end = std::min(triangles.end, num_triangles);
-  triangles.begin = std::min(triangles.begin, triangles.end);
+VtuData vtu_piece(const VtuData& whole, const std::vector<Index>& tets, const std::vector<Index>& triangles) {
+  const Index num_tets = whole.tets.rows();
+  const Index num_triangles = whole.triangles.rows();
+  for (const Index t : tets)
+    if (t < 0 || t >= num_tets)
+      throw Error("a VTU piece: tet " + std::to_string(t) + " of " + std::to_string(num_tets) + " asked for");
+  for (const Index f : triangles)
+    if (f < 0 || f >= num_triangles)
+      throw Error("a VTU piece: triangle " + std::to_string(f) + " of " + std::to_string(num_triangles) + " asked for");
 
   // The points the cells use, numbered in the order of their index in `whole`.
   const Index num_points = whole.points.rows();
@@ -43,10 +45,10 @@ VtuData vtu_piece(const VtuData& whole, ItemRange tets, ItemRange triangles) {
       throw Error("a VTU piece: a cell refers to point " + std::to_string(node) + " of " + std::to_string(num_points));
     local[static_cast<std::size_t>(node)] = 0;
   };
-  for (std::size_t t = tets.begin; t < tets.end; ++t)
-    for (int c = 0; c < 4; ++c) mark(whole.tets(static_cast<Eigen::Index>(t), c));
-  for (std::size_t f = triangles.begin; f < triangles.end; ++f)
-    for (int c = 0; c < 3; ++c) mark(whole.triangles(static_cast<Eigen::Index>(f), c));
+  for (const Index t : tets)
+    for (int c = 0; c < 4; ++c) mark(whole.tets(t, c));
+  for (const Index f : triangles)
+    for (int c = 0; c < 3; ++c) mark(whole.triangles(f, c));
   std::vector<Index> points;
   for (Index v = 0; v < num_points; ++v)
     if (local[static_cast<std::size_t>(v)] == 0) {
@@ -56,24 +58,21 @@ VtuData vtu_piece(const VtuData& whole, ItemRange tets, ItemRange triangles) {
 
   VtuData piece;
   piece.points = take_rows(whole.points, points);
-  piece.tets.resize(static_cast<Eigen::Index>(tets.end - tets.begin), 4);
-  for (std::size_t t = tets.begin; t < tets.end; ++t)
+  piece.tets.resize(static_cast<Eigen::Index>(tets.size()), 4);
+  for (std::size_t k = 0; k < tets.size(); ++k)
     for (int c = 0; c < 4; ++c)
-      piece.tets(static_cast<Eigen::Index>(t - tets.begin), c) =
-          local[static_cast<std::size_t>(whole.tets(static_cast<Eigen::Index>(t), c))];
-  piece.triangles.resize(static_cast<Eigen::Index>(triangles.end - triangles.begin), 3);
-  for (std::size_t f = triangles.begin; f < triangles.end; ++f)
+      piece.tets(static_cast<Eigen::Index>(k), c) = local[static_cast<std::size_t>(whole.tets(tets[k], c))];
+  piece.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (std::size_t k = 0; k < triangles.size(); ++k)
     for (int c = 0; c < 3; ++c)
-      piece.triangles(static_cast<Eigen::Index>(f - triangles.begin), c) =
-          local[static_cast<std::size_t>(whole.triangles(static_cast<Eigen::Index>(f), c))];
+      piece.triangles(static_cast<Eigen::Index>(k), c) = local[static_cast<std::size_t>(whole.triangles(triangles[k], c))];
   for (const VtuField& field : whole.point_fields) piece.point_fields.push_back({field.name, take_rows(field.values, points)});
 
-  // Cell rows: the tets' range, then the triangles' range after all of whole's tets.
-  std::vector<Index> cells;
-  cells.reserve(tets.end - tets.begin + triangles.end - triangles.begin);
-  for (std::size_t t = tets.begin; t < tets.end; ++t) cells.push_back(static_cast<Index>(t));
-  for (std::size_t f = triangles.begin; f < triangles.end; ++f) cells.push_back(static_cast<Index>(num_tets + f));
-  const auto num_cells = static_cast<Index>(num_tets + num_triangles);
+  // Cell rows: the tets, then the triangles (after all of whole's tets).
+  std::vector<Index> cells(tets.begin(), tets.end());
+  cells.reserve(tets.size() + triangles.size());
+  for (const Index f : triangles) cells.push_back(num_tets + f);
+  const Index num_cells = num_tets + num_triangles;
   auto check_cell_rows = [&](const std::string& name, Eigen::Index rows) {
     if (rows != num_cells)
       throw Error("a VTU piece: cell field '" + name + "' has " + std::to_string(rows) + " rows for " +

@@ -7,17 +7,17 @@
 #include <string>
 #include <vector>
 
-#include "sinew/core/share.hpp"
 #include "sinew/io/vtu.hpp"
 
 namespace sinew::io {
 
-/// The part of `whole` made of its tets [tets.begin, tets.end) and triangles
-/// [triangles.begin, triangles.end) (ranges are clamped to the cell counts): the points those
-/// cells use, in increasing order of their index in `whole`, with the point fields restricted to
-/// them and the cell fields to those cells (tets first, then triangles). A point shared by two
-/// pieces is in both. Throws sinew::Error when a cell refers to a point `whole` does not have.
-VtuData vtu_piece(const VtuData& whole, ItemRange tets, ItemRange triangles);
+/// The part of `whole` made of its tets `tets` and triangles `triangles` (indices into whole's
+/// tets and triangles, in the order the piece lists them): the points those cells use, in
+/// increasing order of their index in `whole`, with the point fields restricted to them and the
+/// cell fields to those cells (tets first, then triangles). A point shared by two pieces is in
+/// both. Throws sinew::Error when an index is not a cell of `whole` or a cell refers to a point
+/// `whole` does not have.
+VtuData vtu_piece(const VtuData& whole, const std::vector<Index>& tets, const std::vector<Index>& triangles);
 
 /// Writes the .pvtu at `path` listing `pieces` (file names relative to the .pvtu's directory,
 /// in order) and declaring the arrays of `layout` (a piece or the whole dataset: only the names,

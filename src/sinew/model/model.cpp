@@ -16,6 +16,7 @@
 #include "sinew/fem/stable_time_step.hpp"
 #include "sinew/mesh/tet_mesh.hpp"
 #include "sinew/model/stage_start.hpp"
+#include "sinew/parallel/partition.hpp"
 #include "sinew/parallel/ranks.hpp"
 #include "sinew/scene/build_problem.hpp"
 
@@ -138,9 +139,9 @@ void rebuild_objective(Model& model) {
   }
   model.objective = std::make_unique<solver::Objective>(*model.dofs, terms, model.problem->mesh.num_nodes());
   if (parallel::size() > 1) {
-    // Several ranks (docs/mpi.md): each evaluates its share of the tets and of the contact pairs;
-    // the other terms are rank 0's.
-    if (model.contact) model.contact->set_share(parallel::rank(), parallel::size());
+    // Several ranks (docs/mpi.md): each evaluates the tets it owns and the contact pairs whose tet
+    // it owns (the contact geometry's tets are the mesh's); the other terms are rank 0's.
+    if (model.contact) model.contact->set_share(model.tet_owner, parallel::rank());
     std::vector<Energy*> shares(terms.size(), nullptr);
     for (std::size_t i = 0; i < terms.size(); ++i) {
       if (terms[i] == model.elastic.get()) shares[i] = model.elastic_share.get();
@@ -150,20 +151,29 @@ void rebuild_objective(Model& model) {
   }
 }
 
-/// On several ranks: this rank's share of the elastic energy, a contiguous range of the
-/// deformable tets (docs/mpi.md); null on one rank.
+/// On several ranks: this rank's share of the elastic energy, the deformable tets `tet_owner`
+/// gives it (docs/mpi.md); null on one rank.
 std::unique_ptr<fem::ElasticEnergy> make_elastic_share(const mesh::TetMesh& mesh,
                                                        const std::vector<material::MaterialPtr>& tet_material,
+                                                       const std::vector<int>& tet_owner,
                                                        const fem::ElasticEnergyOptions& options) {
   if (parallel::size() <= 1) return nullptr;
-  std::vector<Index> deformable;
-  for (std::size_t t = 0; t < tet_material.size(); ++t)
-    if (tet_material[t]) deformable.push_back(static_cast<Index>(t));
-  const ItemRange mine = parallel::my_share(deformable.size());
   std::vector<material::MaterialPtr> share(tet_material.size());
-  for (std::size_t k = mine.begin; k < mine.end; ++k)
-    share[static_cast<std::size_t>(deformable[k])] = tet_material[static_cast<std::size_t>(deformable[k])];
+  for (std::size_t t = 0; t < tet_material.size(); ++t)
+    if (tet_owner[t] == parallel::rank()) share[t] = tet_material[t];
   return std::make_unique<fem::ElasticEnergy>(mesh.rest, mesh.tets, std::move(share), options);
+}
+
+/// On several ranks: the rank that owns each tet (parallel::partition_tets, compact parts of
+/// balanced work); empty on one rank. A deformable tet weighs kDeformableTetWeight, a rigid one 1:
+/// a rigid tet has no element work, only the contact pairs and the output cells it may carry.
+std::vector<int> partition_among_ranks(const mesh::TetMesh& mesh, const std::vector<material::MaterialPtr>& tet_material) {
+  if (parallel::size() <= 1) return {};
+  constexpr int kDeformableTetWeight = 8;
+  std::vector<int> weights(tet_material.size(), 1);
+  for (std::size_t t = 0; t < tet_material.size(); ++t)
+    if (tet_material[t]) weights[t] = kDeformableTetWeight;
+  return parallel::partition_tets(mesh.tets, weights, parallel::size());
 }
 
 /// The friction coefficient of every pair of contact bodies: the pair's own or the scene's.
@@ -280,7 +290,8 @@ Model build_model(const scene::SceneConfig& scene) {
   model.dofs = std::make_unique<fem::DofMap>(problem);
   const fem::ElasticEnergyOptions elastic_options{.project_hessians = scene.solver.newton.project_element_hessians};
   model.elastic = std::make_unique<fem::ElasticEnergy>(mesh.rest, mesh.tets, model.tet_material, elastic_options);
-  model.elastic_share = make_elastic_share(mesh, model.tet_material, elastic_options);
+  model.tet_owner = partition_among_ranks(mesh, model.tet_material);
+  model.elastic_share = make_elastic_share(mesh, model.tet_material, model.tet_owner, elastic_options);
   const bool dynamic = scene.dynamics.enabled;
   // Dynamics: gravity and loads act in full from t = 0.
   model.external = std::make_unique<fem::ExternalForceEnergy>(

@@ -44,7 +44,11 @@ struct Model {
   std::unique_ptr<fem::DofMap> dofs;
   std::vector<material::MaterialPtr> tet_material;  ///< #T, nullptr for rigid tets
   std::unique_ptr<fem::ElasticEnergy> elastic;
-  /// On several MPI ranks: this rank's share of `elastic` (its part of the tets), which the
+  /// On several MPI ranks: the rank that owns each tet (#T; compact parts of the mesh, docs/mpi.md
+  /// "Who owns what"), which evaluates its element and contact work and writes it out; empty on
+  /// one rank.
+  std::vector<int> tet_owner;
+  /// On several MPI ranks: this rank's share of `elastic` (the tets it owns), which the
   /// objective evaluates instead (docs/mpi.md); null on one rank. `elastic` stays whole for
   /// the outputs.
   std::unique_ptr<fem::ElasticEnergy> elastic_share;

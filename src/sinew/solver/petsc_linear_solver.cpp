@@ -5,73 +5,22 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <mutex>
 #include <vector>
 
 #include <fmt/format.h>
-#ifdef SINEW_SANITIZER_BUILD
-#include <sanitizer/lsan_interface.h>
-#endif
 
 #include "sinew/core/error.hpp"
+#include "sinew/parallel/petsc.hpp"
 #include "sinew/parallel/ranks.hpp"
 
 namespace sinew::solver {
 namespace {
 
-/// Throws sinew::Error naming the PETSc call that failed (PETSc's own report is silenced by the
-/// return-only error handler set in ensure_petsc).
-void check(PetscErrorCode code, const char* call) {
-  if (code == 0) return;
-  const char* text = nullptr;
-  PetscErrorMessage(code, &text, nullptr);
-  if (code == PETSC_ERR_MEM) throw OutOfMemoryError(fmt::format("PETSc ran out of memory in {}", call));
-  throw Error(fmt::format("PETSc failed in {}: {} (error {})", call, text ? text : "unknown error", static_cast<int>(code)));
-}
+/// PETSc's error codes as exceptions (parallel/petsc.hpp).
+void check(PetscErrorCode code, const char* call) { parallel::check_petsc(code, call); }
 
-/// Initializes PETSc (and MPI, as a singleton when not started by mpirun) once per process and
-/// finalizes it at exit.
-void ensure_petsc() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    parallel::start();  // MPI first when mpirun started several ranks: PETSc then runs on all of them
-    PetscBool initialized = PETSC_FALSE;
-    PetscInitialized(&initialized);
-    if (initialized) return;
-#ifdef SINEW_SANITIZER_BUILD
-    // MPI's and PETSc's start-up state lives until the process ends (some of it in plugins MPI
-    // unloads): not leaks of ours for LeakSanitizer to report.
-    __lsan::ScopedDisabler not_ours;
-#endif
-    check(PetscInitializeNoArguments(), "PetscInitializeNoArguments");
-    check(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr), "PetscPushErrorHandler");
-    std::atexit([] {
-#ifdef SINEW_SANITIZER_BUILD
-      __lsan::ScopedDisabler not_ours;  // MPI_Finalize's own bookkeeping
-#endif
-      PetscFinalize();
-    });
-  });
-}
-
-/// Owns one PETSc object and destroys it with the matching XxxDestroy.
 template <class T, PetscErrorCode (*Destroy)(T*)>
-class Handle {
- public:
-  Handle() = default;
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  ~Handle() { reset(); }
-  void reset() {
-    if (object_) Destroy(&object_);
-    object_ = nullptr;
-  }
-  T& operator*() { return object_; }
-  T get() const { return object_; }
-
- private:
-  T object_ = nullptr;
-};
+using Handle = parallel::PetscHandle<T, Destroy>;
 
 using MatHandle = Handle<Mat, MatDestroy>;
 using KspHandle = Handle<KSP, KSPDestroy>;
@@ -84,7 +33,7 @@ class PetscSolver final : public LinearSolver {
       : gamg_(options.kind == LinearSolverOptions::Kind::PetscGamg),
         tolerance_(options.tolerance),
         max_iterations_(options.max_iterations) {
-    ensure_petsc();
+    parallel::ensure_petsc();
   }
 
   void analyze(const SparseMatrix& K) override {
