@@ -17,6 +17,9 @@ namespace sinew::parallel {
 /// of the run giving PETSc its contiguous share of the graph's rows: collective, every rank must
 /// call it with the same mesh, and every rank gets the same result. With parts <= 1, or fewer
 /// tets than parts or ranks, the parts are contiguous ranges of the tets (share_of) instead.
+/// The same tets, weights and number of ranks give the same partition on every call and in every
+/// run: Scotch runs on one thread (this sets SCOTCH_PTHREAD_NUMBER=1 in the process's
+/// environment) with its random generator reset.
 /// Throws sinew::Error when `weights` has the wrong size or a weight below 1, or PETSc fails.
 std::vector<int> partition_tets(const Tets& tets, const std::vector<int>& weights, int parts);
 
