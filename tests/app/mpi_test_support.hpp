@@ -135,6 +135,7 @@ class Mpi : public ::testing::Test {
       const CommandResult many = run_sinew(
           {"run", scene_path.string(), "-o", output.string(), "--no-progress", "-j", "1"}, directory, mpirun(n));
       ASSERT_EQ(many.exit_code, 0) << many.err;
+      last_ranks_log = many.err;
       // Rank 0 logs; the others are silent (one "solved" line, not N).
       const auto solved_lines = [](const std::string& text) {
         std::size_t count = 0;
@@ -195,6 +196,7 @@ class Mpi : public ::testing::Test {
   }
 
   TempDir directory;
+  std::string last_ranks_log;  ///< rank 0's log (standard error) of expect_same_runs' last run on ranks
   int cases_ = 0;
 };
 

@@ -45,8 +45,24 @@ TEST_F(Mpi, ARigidBallPressedIntoABlockSolvesAsOnOneProcess) {
   EXPECT_LT(pieces - whole, whole / 5) << "points in both pieces";
 }
 
+/// The percentage in rank 0's "... % of the nonzeros couple two ranks" (the linear solve's
+/// layout, logged once), or -1 when the log has no such line.
+double coupling_percentage(const std::string& log) {
+  const std::size_t at = log.find(" % of the nonzeros couple two ranks");
+  if (at == std::string::npos) return -1;
+  const std::size_t start = log.rfind(' ', at - 1);
+  return std::stod(log.substr(start + 1, at - start - 1));
+}
+
 TEST_F(Mpi, MumpsAndGamgShareTheLinearSolveAcrossRanks) {
   expect_same_runs(example("hertz-ball", "petsc-mumps"), {2, 3});
+  // Each rank holds the rows of the nodes it owns (docs/mpi.md, "Who owns what"), so few of the
+  // matrix's nonzeros couple two ranks: 7.4 % of the hertz-ball's on two ranks, where contiguous
+  // ranges of the unknowns coupled 23.1 %.
+  EXPECT_THAT(last_ranks_log, HasSubstr("rows by the mesh partition"));
+  const double coupling = coupling_percentage(last_ranks_log);
+  EXPECT_GT(coupling, 0) << last_ranks_log;
+  EXPECT_LT(coupling, 15) << last_ranks_log;
   // GAMG's aggregates depend on the partition: solved tightly, the runs agree all the same.
   expect_same_runs(example("hertz-ball", "petsc-gamg"), {2});
 }

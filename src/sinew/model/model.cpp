@@ -322,6 +322,7 @@ Model build_model(const scene::SceneConfig& scene) {
   }
   rebuild_objective(model);
   model.scales = newton_scales(problem, scene.solver.newton);
+  if (!model.tet_owner.empty()) model.scales.node_owner = parallel::node_owners(mesh.tets, model.tet_owner, mesh.num_nodes());
   if (dynamic && scene.dynamics.options.integrator == Integrator::Explicit) check_explicit_mass(model);
   return model;
 }

@@ -7,6 +7,7 @@
 /// and diagonally preconditioned CG.
 
 #include <memory>
+#include <vector>
 
 #include "sinew/fem/dof_map.hpp"
 #include "sinew/solver/solver_config.hpp"
@@ -46,6 +47,10 @@ class LinearSolver {
   /// `modes`: #dofs x (up to 6) orthonormal columns (fem::rigid_body_modes); `block_size`: 3 when
   /// the unknowns come in aligned triples, else 1 (fem::unknowns_block_size).
   virtual void set_rigid_body_modes(const MatrixX& /*modes*/, int /*block_size*/) {}
+  /// On a solve shared among MPI ranks (PETSc's): `owner` (#unknowns, or empty) says which rank
+  /// holds each unknown's row of K (solver/row_order.hpp); empty: contiguous ranges. Others
+  /// ignore it.
+  virtual void set_row_owners(std::vector<int> /*owner*/) {}
   /// Negative eigenvalues of the last matrix factorized when the solver knows its inertia (MUMPS's
   /// LDL^T), else -1.
   virtual long negative_eigenvalues() const { return -1; }

@@ -11,6 +11,7 @@
 
 #include "sinew/core/stopwatch.hpp"
 #include "sinew/solver/newton_direction.hpp"
+#include "sinew/solver/row_order.hpp"
 
 namespace sinew::solver {
 
@@ -59,6 +60,10 @@ bool NewtonSolver::ensure_factorization(const fem::State& state, const NodalVect
   }
   Stopwatch watch(times_.linear_solve);
   pass_rigid_body_modes(state);
+  if (!setup_.node_owner.empty() && owners_passed_for_ != objective_.dofs().num_dofs()) {
+    linear_->set_row_owners(unknown_owners(objective_.dofs(), setup_.node_owner, state.x.rows()));
+    owners_passed_for_ = objective_.dofs().num_dofs();
+  }
   if (fresh) linear_->analyze(K_);
   factorized_ = linear_->factorize(K_);
   return factorized_;

@@ -91,6 +91,9 @@ struct NewtonSetup {
   /// Terms of the objective that belong to time integration (inertia, viscosity): left out of
   /// IterationRecord::equilibrium_residual. Not owned.
   std::vector<const Energy*> transient_terms;
+  /// On several MPI ranks: the rank owning each node (#V, parallel::node_owners), whose rows of K
+  /// that rank holds in a linear solve shared among the ranks (PETSc's); empty on one rank.
+  std::vector<int> node_owner;
 };
 
 /// Damped Newton on an Objective. Owns the q-space tangent K, the linear solver with its
@@ -145,6 +148,7 @@ class NewtonSolver {
   std::unique_ptr<LinearSolver> linear_;
   SparseMatrix K_;
   bool factorized_ = false;  ///< the linear solver holds a factorization of some K
+  Index owners_passed_for_ = -1;  ///< the unknowns' count the linear solver's row owners were set for
   NewtonSetup setup_;
   PhaseTimes times_;
   int linear_iterations_ = 0;

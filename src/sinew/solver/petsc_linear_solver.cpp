@@ -5,13 +5,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "sinew/core/error.hpp"
+#include "sinew/core/log.hpp"
 #include "sinew/parallel/petsc.hpp"
 #include "sinew/parallel/ranks.hpp"
+#include "sinew/solver/row_order.hpp"
 
 namespace sinew::solver {
 namespace {
@@ -41,27 +44,49 @@ class PetscSolver final : public LinearSolver {
     ksp_.reset();
     A_.reset();
     const auto n = static_cast<PetscInt>(K.rows());
+    rows_ = n;
     std::vector<PetscInt> starts(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
     std::vector<PetscInt> columns(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
     const bool blocked = block_size_ > 1 && n % block_size_ == 0;
-    // On several ranks each owns a contiguous range of rows (whole blocks of 3 when blocked): K is
-    // the same on every rank (docs/mpi.md), each gives PETSc its own rows.
-    const auto unit = static_cast<std::size_t>(blocked ? block_size_ : 1);
-    const ItemRange blocks = parallel::my_share(static_cast<std::size_t>(n) / unit);
-    first_row_ = static_cast<PetscInt>(blocks.begin * unit);
-    local_rows_ = static_cast<PetscInt>((blocks.end - blocks.begin) * unit);
     check(MatCreate(communicator(), &*A_), "MatCreate");
-    check(MatSetSizes(A_.get(), local_rows_, local_rows_, n, n), "MatSetSizes");
-    check(MatSetType(A_.get(), distributed() ? MATMPIAIJ : MATSEQAIJ), "MatSetType");
-    if (blocked) check(MatSetBlockSize(A_.get(), block_size_), "MatSetBlockSize");
     if (distributed()) {
-      std::vector<PetscInt> local_starts(static_cast<std::size_t>(local_rows_) + 1);
-      for (PetscInt r = 0; r <= local_rows_; ++r)
-        local_starts[static_cast<std::size_t>(r)] = starts[static_cast<std::size_t>(first_row_ + r)] - starts[static_cast<std::size_t>(first_row_)];
-      check(MatMPIAIJSetPreallocationCSR(A_.get(), local_starts.data(),
-                                         columns.data() + starts[static_cast<std::size_t>(first_row_)], nullptr),
+      // K is the same on every rank (docs/mpi.md); each gives PETSc its own rows: the unknowns of
+      // the nodes it owns when set_row_owners said which (whole blocks of 3 when blocked), else a
+      // contiguous range. PETSc numbers the rows rank by rank, so K is renumbered by order_.
+      const bool owned = owner_.size() == static_cast<std::size_t>(n);
+      order_ = order_rows_by_owner(n, owned ? owner_ : std::vector<int>{}, parallel::size(), blocked ? block_size_ : 1);
+      const auto me = static_cast<std::size_t>(parallel::rank());
+      first_row_ = static_cast<PetscInt>(order_.first[me]);
+      local_rows_ = static_cast<PetscInt>(order_.first[me + 1] - order_.first[me]);
+      std::vector<PetscInt> new_of_old(static_cast<std::size_t>(n));
+      for (PetscInt i = 0; i < n; ++i) new_of_old[static_cast<std::size_t>(order_.old_of_new[static_cast<std::size_t>(i)])] = i;
+      local_starts_.assign(1, 0);
+      local_columns_.clear();
+      value_source_.clear();
+      std::vector<std::pair<PetscInt, PetscInt>> row;  // (new column, index into K's values)
+      for (PetscInt i = 0; i < local_rows_; ++i) {
+        const auto old = static_cast<std::size_t>(order_.old_of_new[static_cast<std::size_t>(first_row_ + i)]);
+        row.clear();
+        for (PetscInt k = starts[old]; k < starts[old + 1]; ++k) row.emplace_back(new_of_old[static_cast<std::size_t>(columns[static_cast<std::size_t>(k)])], k);
+        std::sort(row.begin(), row.end());
+        for (const auto& [column, source] : row) {
+          local_columns_.push_back(column);
+          value_source_.push_back(source);
+        }
+        local_starts_.push_back(static_cast<PetscInt>(local_columns_.size()));
+      }
+      if (!reported_layout_) report_layout(n);
+      check(MatSetSizes(A_.get(), local_rows_, local_rows_, n, n), "MatSetSizes");
+      check(MatSetType(A_.get(), MATMPIAIJ), "MatSetType");
+      if (blocked) check(MatSetBlockSize(A_.get(), block_size_), "MatSetBlockSize");
+      check(MatMPIAIJSetPreallocationCSR(A_.get(), local_starts_.data(), local_columns_.data(), nullptr),
             "MatMPIAIJSetPreallocationCSR");
     } else {
+      first_row_ = 0;
+      local_rows_ = n;
+      check(MatSetSizes(A_.get(), n, n, n, n), "MatSetSizes");
+      check(MatSetType(A_.get(), MATSEQAIJ), "MatSetType");
+      if (blocked) check(MatSetBlockSize(A_.get(), block_size_), "MatSetBlockSize");
       check(MatSeqAIJSetPreallocationCSR(A_.get(), starts.data(), columns.data(), nullptr), "MatSeqAIJSetPreallocationCSR");
     }
     check(MatSetOption(A_.get(), MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption(MAT_SYMMETRIC)");
@@ -76,6 +101,7 @@ class PetscSolver final : public LinearSolver {
       check(KSPSetType(ksp_.get(), KSPCG), "KSPSetType(cg)");
       check(PCSetType(pc, PCGAMG), "PCSetType(gamg)");
       check(KSPSetTolerances(ksp_.get(), tolerance_, 0.0, PETSC_DEFAULT, max_iterations_), "KSPSetTolerances");
+      use_safe_chebyshev_bounds();
     } else {
       check(KSPSetType(ksp_.get(), KSPPREONLY), "KSPSetType(preonly)");
       check(PCSetType(pc, PCCHOLESKY), "PCSetType(cholesky)");
@@ -98,9 +124,12 @@ class PetscSolver final : public LinearSolver {
   bool factorize(const SparseMatrix& K) override {
     if (!A_.get() || !same_pattern(K)) analyze(K);
     if (distributed()) {
-      for (PetscInt row = first_row_; row < first_row_ + local_rows_; ++row) {
-        const auto begin = starts_[static_cast<std::size_t>(row)], end = starts_[static_cast<std::size_t>(row) + 1];
-        check(MatSetValues(A_.get(), 1, &row, end - begin, columns_.data() + begin, K.valuePtr() + begin,
+      std::vector<PetscScalar> values(value_source_.size());
+      for (std::size_t k = 0; k < values.size(); ++k) values[k] = K.valuePtr()[value_source_[k]];
+      for (PetscInt i = 0; i < local_rows_; ++i) {
+        const PetscInt row = first_row_ + i;
+        const auto begin = local_starts_[static_cast<std::size_t>(i)], end = local_starts_[static_cast<std::size_t>(i) + 1];
+        check(MatSetValues(A_.get(), 1, &row, end - begin, local_columns_.data() + begin, values.data() + begin,
                            INSERT_VALUES),
               "MatSetValues");
       }
@@ -120,7 +149,8 @@ class PetscSolver final : public LinearSolver {
         check(VecCreateMPI(communicator(), local_rows_, static_cast<PetscInt>(K.rows()), &*v), "VecCreateMPI");
         PetscScalar* data = nullptr;
         check(VecGetArray(v.get(), &data), "VecGetArray");
-        std::copy(modes_.col(c).data() + first_row_, modes_.col(c).data() + first_row_ + local_rows_, data);
+        const VectorX mine = local_part(modes_.col(c));
+        std::copy(mine.data(), mine.data() + local_rows_, data);
         check(VecRestoreArray(v.get(), &data), "VecRestoreArray");
         raw.push_back(v.get());
       }
@@ -151,19 +181,19 @@ class PetscSolver final : public LinearSolver {
 
   LinearSolveStats solve(const VectorX& b, VectorX& x) override {
     LinearSolveStats stats;
-    x = VectorX::Zero(b.size());
+    const VectorX b_mine = local_part(b);
+    VectorX x_mine = VectorX::Zero(local_rows_);
     VecHandle pb, px;
-    wrap_local(b, pb);
-    wrap_local(x, px);
+    wrap(b_mine, pb);
+    wrap(x_mine, px);
     check(KSPSolve(ksp_.get(), pb.get(), px.get()), "KSPSolve");
     KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
     check(KSPGetConvergedReason(ksp_.get(), &reason), "KSPGetConvergedReason");
     PetscInt iterations = 0;
     check(KSPGetIterationNumber(ksp_.get(), &iterations), "KSPGetIterationNumber");
-    // Each rank solved for its own rows (the rest of x is 0 there): every rank gets all of x.
-    if (distributed()) parallel::sum(x.data(), static_cast<std::size_t>(x.size()));
+    x = whole(x_mine, b.size());
     stats.iterations = gamg_ ? static_cast<int>(iterations) : 0;
-    stats.relative_residual = relative_residual(x, b);
+    stats.relative_residual = relative_residual(x_mine, b_mine);
     // CG meeting negative curvature (an indefinite tangent) or stopping short: the caller shifts.
     stats.success = reason > 0 && x.allFinite();
     return stats;
@@ -183,6 +213,12 @@ class PetscSolver final : public LinearSolver {
     }
   }
   long negative_eigenvalues() const override { return negative_; }
+  void set_row_owners(std::vector<int> owner) override {
+    if (owner == owner_) return;
+    owner_ = std::move(owner);
+    A_.reset();  // PETSc's rows change: rebuild on the next factorize
+    ksp_.reset();
+  }
 
  private:
   bool same_pattern(const SparseMatrix& K) const {
@@ -192,34 +228,80 @@ class PetscSolver final : public LinearSolver {
            std::equal(columns_.begin(), columns_.end(), K.innerIndexPtr());
   }
 
-  /// |A x - b| / |b| with PETSc's matrix (the one factorized; the caller's K may be gone).
-  double relative_residual(const VectorX& x, const VectorX& b) const {
-    VectorX Ax = VectorX::Zero(b.size());
+  /// |A x - b| / |b| with PETSc's matrix (the one factorized; the caller's K may be gone), from
+  /// this rank's rows of x and b.
+  double relative_residual(const VectorX& x_mine, const VectorX& b_mine) const {
+    VectorX Ax = VectorX::Zero(local_rows_);
     VecHandle px, pAx;
-    wrap_local(x, px);
-    wrap_local(Ax, pAx);
+    wrap(x_mine, px);
+    wrap(Ax, pAx);
     check(MatMult(A_.get(), px.get(), pAx.get()), "MatMult");
-    const auto rows = Eigen::seqN(first_row_, local_rows_);
-    double squares[2] = {(Ax(rows) - b(rows)).squaredNorm(), b(rows).squaredNorm()};
+    double squares[2] = {(Ax - b_mine).squaredNorm(), b_mine.squaredNorm()};
     if (distributed()) parallel::sum(squares, 2);
     const double nb = std::sqrt(squares[1]);
     return nb > 0 ? std::sqrt(squares[0]) / nb : std::sqrt(squares[0]);
+  }
+
+  /// GAMG's smoothers are Chebyshev polynomials over [0.1, 1.1] times an estimate of each level's
+  /// largest eigenvalue (PETSc's default). An estimate too low by more than the 10 % makes the
+  /// preconditioner indefinite and CG stops (DIVERGED_INDEFINITE_PC): on the 146 k-tet compressed
+  /// block on two ranks, 41 of 83 solves, which the Newton solver then shifted (41 Newton
+  /// iterations instead of 26). 20 % headroom removed every such stop there (docs/mpi.md). Left
+  /// alone when PETSC_OPTIONS sets it.
+  static void use_safe_chebyshev_bounds() {
+    const char* option = "-mg_levels_ksp_chebyshev_esteig";
+    PetscBool given = PETSC_FALSE;
+    check(PetscOptionsHasName(nullptr, nullptr, option, &given), "PetscOptionsHasName");
+    if (!given) check(PetscOptionsSetValue(nullptr, option, "0,0.1,0,1.2"), "PetscOptionsSetValue");
+  }
+
+  /// Logs (rank 0, once) how the ranks share the first distributed matrix: their rows, and the
+  /// nonzeros that couple a row of one rank to a column of another, which PETSc's products and
+  /// MUMPS's fronts exchange (few when the rows follow the mesh partition). Collective.
+  void report_layout(PetscInt n) {
+    reported_layout_ = true;
+    double counts[2] = {0, static_cast<double>(local_columns_.size())};  // off-rank nonzeros, all nonzeros
+    for (const PetscInt column : local_columns_)
+      if (column < first_row_ || column >= first_row_ + local_rows_) ++counts[0];
+    parallel::sum(counts, 2);
+    const double rows[2] = {parallel::max(static_cast<double>(local_rows_)),
+                            -parallel::max(-static_cast<double>(local_rows_))};
+    logger().info("linear solve on {} ranks ({}): {} to {} of {} rows each, rows {}; {:.1f} % of the nonzeros couple two ranks",
+                  parallel::size(), name(), rows[1], rows[0], n,
+                  owner_.size() == static_cast<std::size_t>(n) ? "by the mesh partition" : "in contiguous ranges",
+                  counts[1] > 0 ? 100 * counts[0] / counts[1] : 0.0);
   }
 
   /// The ranks share the matrix (a run on several MPI ranks, docs/mpi.md).
   static bool distributed() { return parallel::size() > 1; }
   static MPI_Comm communicator() { return distributed() ? PETSC_COMM_WORLD : PETSC_COMM_SELF; }
 
-  /// A PETSc vector viewing this rank's rows of an Eigen vector of all rows (no copy; PETSc
-  /// writes into it when it is a solution).
-  void wrap_local(const VectorX& v, VecHandle& out) const {
+  /// This rank's rows (local_rows_, in PETSc's order) of a vector of all unknowns.
+  VectorX local_part(const VectorX& full) const {
+    if (!distributed()) return full;
+    VectorX mine(local_rows_);
+    for (PetscInt i = 0; i < local_rows_; ++i) mine(i) = full(order_.old_of_new[static_cast<std::size_t>(first_row_ + i)]);
+    return mine;
+  }
+
+  /// The vector of all `n` unknowns on every rank from each rank's rows `mine`.
+  VectorX whole(const VectorX& mine, Index n) const {
+    if (!distributed()) return mine;
+    VectorX full = VectorX::Zero(n);
+    for (PetscInt i = 0; i < local_rows_; ++i) full(order_.old_of_new[static_cast<std::size_t>(first_row_ + i)]) = mine(i);
+    parallel::sum(full.data(), static_cast<std::size_t>(n));
+    return full;
+  }
+
+  /// A PETSc vector viewing this rank's rows `mine` (no copy; PETSc writes into it when it is a
+  /// solution).
+  void wrap(const VectorX& mine, VecHandle& out) const {
     out.reset();
-    const auto n = static_cast<PetscInt>(v.size());
     if (distributed())
-      check(VecCreateMPIWithArray(communicator(), 1, local_rows_, n, v.data() + first_row_, &*out),
+      check(VecCreateMPIWithArray(communicator(), 1, local_rows_, rows_, mine.data(), &*out),
             "VecCreateMPIWithArray");
     else
-      check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, n, v.data(), &*out), "VecCreateSeqWithArray");
+      check(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, local_rows_, mine.data(), &*out), "VecCreateSeqWithArray");
   }
 
   bool gamg_;
@@ -229,12 +311,19 @@ class PetscSolver final : public LinearSolver {
   MatrixX modes_;
   MatHandle A_;
   KspHandle ksp_;
-  PetscInt first_row_ = 0;         ///< this rank's rows of the matrix: [first_row_, first_row_ + local_rows_)
+  PetscInt rows_ = 0;              ///< K's rows (all ranks')
+  PetscInt first_row_ = 0;         ///< this rank's rows of PETSc's matrix: [first_row_, first_row_ + local_rows_)
   PetscInt local_rows_ = 0;
   std::vector<PetscInt> starts_;   ///< the analyzed pattern's column starts
   std::vector<PetscInt> columns_;  ///< and row indices (compressed columns of the symmetric K)
+  std::vector<int> owner_;         ///< the rank of each unknown (set_row_owners), or empty
+  RowOrder order_;                 ///< on several ranks: PETSc's rows as K's unknowns, rank by rank
+  std::vector<PetscInt> local_starts_;   ///< on several ranks: this rank's rows of PETSc's matrix,
+  std::vector<PetscInt> local_columns_;  ///< compressed, with PETSc's column numbers, sorted,
+  std::vector<PetscInt> value_source_;   ///< and where each value is in K's values
   int factorizations_ = 0;
   long negative_ = -1;
+  bool reported_layout_ = false;
 };
 
 }  // namespace
