@@ -67,6 +67,16 @@ TEST_F(Mpi, MumpsAndGamgShareTheLinearSolveAcrossRanks) {
   expect_same_runs(example("hertz-ball", "petsc-gamg"), {2});
 }
 
+TEST_F(Mpi, ADynamicRunHoldsTheRowsOfItsNodesInPetsc) {
+  // Time steps go to Newton without a predictor's factorization first: the rows still follow the
+  // mesh partition.
+  json scene = example("ball-drop", "petsc-mumps");
+  scene["dynamics"]["end_time"] = 0.1;
+  expect_same_runs(scene, {2});
+  EXPECT_THAT(last_ranks_log, HasSubstr("rows by the mesh partition"));
+  EXPECT_GT(coupling_percentage(last_ranks_log), 0) << last_ranks_log;
+}
+
 TEST_F(Mpi, StackedBlocksWithFrictionSolveAsOnOneProcess) { expect_same_runs(example("stacked-blocks"), {2, 4}); }
 
 TEST_F(Mpi, ATwistedCylinderSolvesAsOnOneProcess) { expect_same_runs(example("twisted-cylinder"), {2}); }

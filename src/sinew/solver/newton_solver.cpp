@@ -59,17 +59,17 @@ bool NewtonSolver::ensure_factorization(const fem::State& state, const NodalVect
     fresh = objective_.hessian(state, full_gradient, setup_.node_viscosity, K_);
   }
   Stopwatch watch(times_.linear_solve);
-  pass_rigid_body_modes(state);
-  if (!setup_.node_owner.empty() && owners_passed_for_ != objective_.dofs().num_dofs()) {
-    linear_->set_row_owners(unknown_owners(objective_.dofs(), setup_.node_owner, state.x.rows()));
-    owners_passed_for_ = objective_.dofs().num_dofs();
-  }
+  prepare_linear_solver(state);
   if (fresh) linear_->analyze(K_);
   factorized_ = linear_->factorize(K_);
   return factorized_;
 }
 
-void NewtonSolver::pass_rigid_body_modes(const fem::State& state) {
+void NewtonSolver::prepare_linear_solver(const fem::State& state) {
+  if (!setup_.node_owner.empty() && owners_passed_for_ != objective_.dofs().num_dofs()) {
+    linear_->set_row_owners(unknown_owners(objective_.dofs(), setup_.node_owner, state.x.rows()));
+    owners_passed_for_ = objective_.dofs().num_dofs();
+  }
   if (!linear_->wants_rigid_body_modes()) return;
   const fem::DofMap& dofs = objective_.dofs();
   linear_->set_rigid_body_modes(fem::rigid_body_modes(dofs, state), fem::unknowns_block_size(dofs, state.x.rows()));
@@ -190,7 +190,7 @@ NewtonResult NewtonSolver::solve(fem::State& state, const NewtonOptions& options
       // Newton, near round-off for one; docs/solver.md, "Lagged factorizations").
       const bool stalling = redo_exact || (it > 0 && residual > 0.5 * previous_residual);
       linear_->require_relative_residual(stalling ? 0.0 : 1.0);
-      pass_rigid_body_modes(state);
+      prepare_linear_solver(state);
       direction = newton_direction(K_, fresh, g, *linear_,
                                    ShiftStart{.first = shift_hint, .after_unshifted_failure = last_shift_ / 10});
     }

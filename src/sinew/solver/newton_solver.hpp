@@ -141,8 +141,10 @@ class NewtonSolver {
   /// Returns the step length taken (1 when nothing better was found); `point` holds its
   /// gradient on return.
   double extrapolate(const fem::State& state, const VectorX& dq, double slope, double max_growth, TrialPoint& point);
-  /// Gives the linear solver the rigid-body modes at `state` when its preconditioner uses them.
-  void pass_rigid_body_modes(const fem::State& state);
+  /// Before a factorization: gives the linear solver the ranks that hold the unknowns' rows (on
+  /// several MPI ranks, once per DofMap) and the rigid-body modes at `state` when its
+  /// preconditioner uses them.
+  void prepare_linear_solver(const fem::State& state);
 
   Objective& objective_;
   std::unique_ptr<LinearSolver> linear_;
