@@ -45,7 +45,7 @@ TEST_F(Mpi, ARigidBallPressedIntoABlockSolvesAsOnOneProcess) {
   EXPECT_LT(pieces - whole, whole / 5) << "points in both pieces";
 }
 
-/// The percentage in rank 0's "... % of the nonzeros couple two ranks" (the linear solve's
+/// The percentage in rank 0's "... % of the nonzeros couple two ranks; ..." (the linear solve's
 /// layout, logged once), or -1 when the log has no such line.
 double coupling_percentage(const std::string& log) {
   const std::size_t at = log.find(" % of the nonzeros couple two ranks");
@@ -60,6 +60,8 @@ TEST_F(Mpi, MumpsAndGamgShareTheLinearSolveAcrossRanks) {
   // matrix's nonzeros couple two ranks: 7.4 % of the hertz-ball's on two ranks, where contiguous
   // ranges of the unknowns coupled 23.1 %.
   EXPECT_THAT(last_ranks_log, HasSubstr("rows by the mesh partition"));
+  // Nor is the whole tangent summed on every rank: each adds its part into PETSc's matrix.
+  EXPECT_THAT(last_ranks_log, HasSubstr("each rank adds its part of the tangent"));
   const double coupling = coupling_percentage(last_ranks_log);
   EXPECT_GT(coupling, 0) << last_ranks_log;
   EXPECT_LT(coupling, 15) << last_ranks_log;

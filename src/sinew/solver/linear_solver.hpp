@@ -51,6 +51,10 @@ class LinearSolver {
   /// holds each unknown's row of K (solver/row_order.hpp); empty: contiguous ranges. Others
   /// ignore it.
   virtual void set_row_owners(std::vector<int> /*owner*/) {}
+  /// True when factorize() takes this rank's part of K and adds the ranks' parts (PETSc's
+  /// solvers on several MPI ranks): K's diagonal is then a sum over the ranks, and a shift of K is
+  /// added by one rank (newton_direction). Else every rank passes the whole K.
+  virtual bool adds_ranks_parts() const { return false; }
   /// Negative eigenvalues of the last matrix factorized when the solver knows its inertia (MUMPS's
   /// LDL^T), else -1.
   virtual long negative_eigenvalues() const { return -1; }

@@ -34,6 +34,8 @@ struct ShiftStart {
 /// descent direction, retries with K + shift * |diag(K)|, the shift growing tenfold from
 /// `start` (see ShiftStart), at most 12 attempts, then falls back to diagonally scaled steepest
 /// descent. `fresh_pattern`: K's sparsity pattern is new and `linear` must analyze it first.
+/// When `linear` adds the ranks' parts of K (LinearSolver::adds_ranks_parts), K is this rank's
+/// part: collective, every rank must call it.
 Direction newton_direction(const SparseMatrix& K, bool fresh_pattern, const VectorX& g, LinearSolver& linear,
                            const ShiftStart& start);
 

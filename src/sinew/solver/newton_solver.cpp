@@ -48,7 +48,10 @@ constexpr double kRoundoffResidual = 1e-13;
 }  // namespace
 
 NewtonSolver::NewtonSolver(Objective& objective, const LinearSolverOptions& linear, NewtonSetup setup)
-    : objective_(objective), linear_(make_linear_solver(linear)), setup_(std::move(setup)) {}
+    : objective_(objective), linear_(make_linear_solver(linear)), setup_(std::move(setup)) {
+  // A solver that adds the ranks' parts of K needs no whole K on every rank (docs/mpi.md).
+  objective_.set_hessian_summed(!linear_->adds_ranks_parts());
+}
 
 bool NewtonSolver::ensure_factorization(const fem::State& state, const NodalVectors& full_gradient) {
   if (factorized_) return true;

@@ -50,6 +50,12 @@ class Objective {
   /// Every rank must then call the objective's functions in the same order (they communicate).
   /// The shares are not owned.
   void share_terms(std::vector<Energy*> shares);
+  /// On several ranks, whether hessian() sums the full-space Hessian over the ranks (true, the
+  /// default: every rank gets the whole K). False leaves each rank's K its own part: its terms'
+  /// Hessians reduced to the unknowns, with the reduction's quasi-viscosity and rigid-body terms
+  /// from the gradient on rank 0 only, so that the ranks' parts add up to the whole K (for a
+  /// linear solver that adds them, LinearSolver::adds_ranks_parts). No effect on one rank.
+  void set_hessian_summed(bool summed) { hessian_summed_ = summed; }
 
  private:
   void rebuild_pattern();
@@ -68,6 +74,7 @@ class Objective {
   Index num_nodes_;
   BlockSparseMatrix H_;
   bool pattern_ready_ = false;
+  bool hessian_summed_ = true;
   double collision_seconds_ = 0;
 };
 

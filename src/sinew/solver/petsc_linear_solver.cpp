@@ -50,9 +50,10 @@ class PetscSolver final : public LinearSolver {
     const bool blocked = block_size_ > 1 && n % block_size_ == 0;
     check(MatCreate(communicator(), &*A_), "MatCreate");
     if (distributed()) {
-      // K is the same on every rank (docs/mpi.md); each gives PETSc its own rows: the unknowns of
-      // the nodes it owns when set_row_owners said which (whole blocks of 3 when blocked), else a
-      // contiguous range. PETSc numbers the rows rank by rank, so K is renumbered by order_.
+      // Each rank passes its part of K (docs/mpi.md; the pattern is the same on every rank) and
+      // holds its own rows: the unknowns of the nodes it owns when set_row_owners said which
+      // (whole blocks of 3 when blocked), else a contiguous range. PETSc numbers the rows rank by
+      // rank, so K is renumbered by order_.
       const bool owned = owner_.size() == static_cast<std::size_t>(n);
       order_ = order_rows_by_owner(n, owned ? owner_ : std::vector<int>{}, parallel::size(), blocked ? block_size_ : 1);
       const auto me = static_cast<std::size_t>(parallel::rank());
@@ -60,26 +61,32 @@ class PetscSolver final : public LinearSolver {
       local_rows_ = static_cast<PetscInt>(order_.first[me + 1] - order_.first[me]);
       std::vector<PetscInt> new_of_old(static_cast<std::size_t>(n));
       for (PetscInt i = 0; i < n; ++i) new_of_old[static_cast<std::size_t>(order_.old_of_new[static_cast<std::size_t>(i)])] = i;
-      local_starts_.assign(1, 0);
-      local_columns_.clear();
+      // K renumbered whole (each rank adds its part of K into every row it touches), and this
+      // rank's rows of it for the preallocation.
+      row_starts_.assign(1, 0);
+      row_columns_.clear();
       value_source_.clear();
       std::vector<std::pair<PetscInt, PetscInt>> row;  // (new column, index into K's values)
-      for (PetscInt i = 0; i < local_rows_; ++i) {
-        const auto old = static_cast<std::size_t>(order_.old_of_new[static_cast<std::size_t>(first_row_ + i)]);
+      for (PetscInt i = 0; i < n; ++i) {
+        const auto old = static_cast<std::size_t>(order_.old_of_new[static_cast<std::size_t>(i)]);
         row.clear();
         for (PetscInt k = starts[old]; k < starts[old + 1]; ++k) row.emplace_back(new_of_old[static_cast<std::size_t>(columns[static_cast<std::size_t>(k)])], k);
         std::sort(row.begin(), row.end());
         for (const auto& [column, source] : row) {
-          local_columns_.push_back(column);
+          row_columns_.push_back(column);
           value_source_.push_back(source);
         }
-        local_starts_.push_back(static_cast<PetscInt>(local_columns_.size()));
+        row_starts_.push_back(static_cast<PetscInt>(row_columns_.size()));
       }
+      const PetscInt base = row_starts_[static_cast<std::size_t>(first_row_)];
+      std::vector<PetscInt> local_starts(static_cast<std::size_t>(local_rows_) + 1);
+      for (PetscInt i = 0; i <= local_rows_; ++i)
+        local_starts[static_cast<std::size_t>(i)] = row_starts_[static_cast<std::size_t>(first_row_ + i)] - base;
       if (!reported_layout_) report_layout(n);
       check(MatSetSizes(A_.get(), local_rows_, local_rows_, n, n), "MatSetSizes");
       check(MatSetType(A_.get(), MATMPIAIJ), "MatSetType");
       if (blocked) check(MatSetBlockSize(A_.get(), block_size_), "MatSetBlockSize");
-      check(MatMPIAIJSetPreallocationCSR(A_.get(), local_starts_.data(), local_columns_.data(), nullptr),
+      check(MatMPIAIJSetPreallocationCSR(A_.get(), local_starts.data(), row_columns_.data() + base, nullptr),
             "MatMPIAIJSetPreallocationCSR");
     } else {
       first_row_ = 0;
@@ -124,13 +131,16 @@ class PetscSolver final : public LinearSolver {
   bool factorize(const SparseMatrix& K) override {
     if (!A_.get() || !same_pattern(K)) analyze(K);
     if (distributed()) {
+      // Each rank adds its part of K (Objective::set_hessian_summed): the rows it touches, its own
+      // and its neighbours' (PETSc sends those to their holders at assembly); its rows of zeros
+      // are left out, so a rank sends little beyond its part of the mesh.
+      check(MatZeroEntries(A_.get()), "MatZeroEntries");
       std::vector<PetscScalar> values(value_source_.size());
       for (std::size_t k = 0; k < values.size(); ++k) values[k] = K.valuePtr()[value_source_[k]];
-      for (PetscInt i = 0; i < local_rows_; ++i) {
-        const PetscInt row = first_row_ + i;
-        const auto begin = local_starts_[static_cast<std::size_t>(i)], end = local_starts_[static_cast<std::size_t>(i) + 1];
-        check(MatSetValues(A_.get(), 1, &row, end - begin, local_columns_.data() + begin, values.data() + begin,
-                           INSERT_VALUES),
+      for (PetscInt row = 0; row < rows_; ++row) {
+        const auto begin = row_starts_[static_cast<std::size_t>(row)], end = row_starts_[static_cast<std::size_t>(row) + 1];
+        if (std::all_of(values.begin() + begin, values.begin() + end, [](double v) { return v == 0.0; })) continue;
+        check(MatSetValues(A_.get(), 1, &row, end - begin, row_columns_.data() + begin, values.data() + begin, ADD_VALUES),
               "MatSetValues");
       }
     } else {
@@ -213,6 +223,7 @@ class PetscSolver final : public LinearSolver {
     }
   }
   long negative_eigenvalues() const override { return negative_; }
+  bool adds_ranks_parts() const override { return distributed(); }
   void set_row_owners(std::vector<int> owner) override {
     if (owner == owner_) return;
     owner_ = std::move(owner);
@@ -255,21 +266,25 @@ class PetscSolver final : public LinearSolver {
     if (!given) check(PetscOptionsSetValue(nullptr, option, "0,0.1,0,1.2"), "PetscOptionsSetValue");
   }
 
-  /// Logs (rank 0, once) how the ranks share the first distributed matrix: their rows, and the
+  /// Logs (rank 0, once) how the ranks share the first distributed matrix: their rows, the
   /// nonzeros that couple a row of one rank to a column of another, which PETSc's products and
-  /// MUMPS's fronts exchange (few when the rows follow the mesh partition). Collective.
+  /// MUMPS's fronts exchange (few when the rows follow the mesh partition), and whether each rank
+  /// adds its part of the tangent. Collective.
   void report_layout(PetscInt n) {
     reported_layout_ = true;
-    double counts[2] = {0, static_cast<double>(local_columns_.size())};  // off-rank nonzeros, all nonzeros
-    for (const PetscInt column : local_columns_)
-      if (column < first_row_ || column >= first_row_ + local_rows_) ++counts[0];
+    const auto begin = static_cast<std::size_t>(row_starts_[static_cast<std::size_t>(first_row_)]);
+    const auto end = static_cast<std::size_t>(row_starts_[static_cast<std::size_t>(first_row_ + local_rows_)]);
+    double counts[2] = {0, static_cast<double>(end - begin)};  // off-rank nonzeros, all nonzeros of its rows
+    for (std::size_t k = begin; k < end; ++k)
+      if (row_columns_[k] < first_row_ || row_columns_[k] >= first_row_ + local_rows_) ++counts[0];
     parallel::sum(counts, 2);
     const double rows[2] = {parallel::max(static_cast<double>(local_rows_)),
                             -parallel::max(-static_cast<double>(local_rows_))};
-    logger().info("linear solve on {} ranks ({}): {} to {} of {} rows each, rows {}; {:.1f} % of the nonzeros couple two ranks",
+    logger().info("linear solve on {} ranks ({}): {} to {} of {} rows each, rows {}; {:.1f} % of the nonzeros couple two ranks; {}",
                   parallel::size(), name(), rows[1], rows[0], n,
                   owner_.size() == static_cast<std::size_t>(n) ? "by the mesh partition" : "in contiguous ranges",
-                  counts[1] > 0 ? 100 * counts[0] / counts[1] : 0.0);
+                  counts[1] > 0 ? 100 * counts[0] / counts[1] : 0.0,
+                  adds_ranks_parts() ? "each rank adds its part of the tangent" : "the tangent summed on every rank");
   }
 
   /// The ranks share the matrix (a run on several MPI ranks, docs/mpi.md).
@@ -318,9 +333,9 @@ class PetscSolver final : public LinearSolver {
   std::vector<PetscInt> columns_;  ///< and row indices (compressed columns of the symmetric K)
   std::vector<int> owner_;         ///< the rank of each unknown (set_row_owners), or empty
   RowOrder order_;                 ///< on several ranks: PETSc's rows as K's unknowns, rank by rank
-  std::vector<PetscInt> local_starts_;   ///< on several ranks: this rank's rows of PETSc's matrix,
-  std::vector<PetscInt> local_columns_;  ///< compressed, with PETSc's column numbers, sorted,
-  std::vector<PetscInt> value_source_;   ///< and where each value is in K's values
+  std::vector<PetscInt> row_starts_;    ///< on several ranks: K renumbered (all rows, PETSc's numbers),
+  std::vector<PetscInt> row_columns_;   ///< compressed rows with sorted columns,
+  std::vector<PetscInt> value_source_;  ///< and where each value is in K's values
   int factorizations_ = 0;
   long negative_ = -1;
   bool reported_layout_ = false;
