@@ -142,18 +142,16 @@ bool Objective::hessian(const fem::State& state, const NodalVectors& full_gradie
   }
   const auto nnz_before = K.nonZeros();
   const auto rows_before = K.rows();
-  if (!shares_.empty() && !hessian_summed_ && !parallel::is_root()) {
-    // This rank's part of K (set_hessian_summed): the reduction's terms that do not come from H
-    // are rank 0's.
-    reduction_.reduce(state, H_, NodalVectors::Zero(full_gradient.rows(), 3), VectorX(), K);
-  } else {
-    // Every rank gets the whole full-space Hessian (the same pattern everywhere: the terms give
-    // it), then reduces it to the same K; or rank 0 its part, with the terms that do not come
-    // from H.
-    if (!shares_.empty() && hessian_summed_)
-      parallel::sum(H_.values().empty() ? nullptr : H_.values().front().data(), 9 * H_.values().size());
+  // Every rank gets the whole full-space Hessian (the same pattern everywhere: the terms give
+  // it) and reduces it to the same K; or, with set_hessian_summed(false), its part, where the
+  // reduction's terms that do not come from H (viscosity, rigid-body rotation) are rank 0's.
+  const bool whole = shares_.empty() || hessian_summed_;
+  if (!shares_.empty() && hessian_summed_)
+    parallel::sum(H_.values().empty() ? nullptr : H_.values().front().data(), 9 * H_.values().size());
+  if (whole || parallel::is_root())
     reduction_.reduce(state, H_, full_gradient, node_viscosity, K);
-  }
+  else
+    reduction_.reduce(state, H_, NodalVectors::Zero(full_gradient.rows(), 3), VectorX(), K);
   return fresh || K.nonZeros() != nnz_before || K.rows() != rows_before;
 }
 
