@@ -1,5 +1,6 @@
 #include "sinew/fem/elastic_energy.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -31,10 +32,18 @@ ElasticEnergy::ElasticEnergy(const Positions& rest, const Tets& tets,
     : tets_(tets), material_(std::move(tet_material)), options_(options) {
   if (material_.size() != static_cast<std::size_t>(tets.rows()))
     throw Error("ElasticEnergy: one material per tet expected");
-  rest_ = compute_rest_shapes(rest, tets);
+  // Every tet's shape is checked (a degenerate one throws), and the deformable tets' are kept:
+  // a rank's share keeps its own only (docs/mpi.md).
+  const std::vector<TetRestShape> every_rest_shape = compute_rest_shapes(rest, tets);
   num_nodes_ = static_cast<Index>(rest.rows());
+  const auto deformable = static_cast<std::size_t>(std::count_if(material_.begin(), material_.end(), [](const auto& m) { return m != nullptr; }));
+  active_.reserve(deformable);
+  rest_.reserve(deformable);
   for (Index t = 0; t < tets.rows(); ++t)
-    if (material_[t]) active_.push_back(t);
+    if (material_[t]) {
+      active_.push_back(t);
+      rest_.push_back(every_rest_shape[static_cast<std::size_t>(t)]);
+    }
 
   incidence_offsets_.assign(static_cast<std::size_t>(num_nodes_) + 1, 0);
   for (Index t : active_)
@@ -52,8 +61,8 @@ double ElasticEnergy::value(const Positions& x) const {
       [&](const tbb::blocked_range<std::size_t>& r, double sum) {
         for (std::size_t s = r.begin(); s < r.end(); ++s) {
           const Index t = active_[s];
-          const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[t].Dm_inv);
-          sum += rest_[t].volume * material_[t]->evaluate(F, nullptr, nullptr);
+          const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[s].Dm_inv);
+          sum += rest_[s].volume * material_[t]->evaluate(F, nullptr, nullptr);
         }
         return sum;
       },
@@ -66,7 +75,7 @@ bool ElasticEnergy::is_valid(const Positions& x) const {
       [&](const tbb::blocked_range<std::size_t>& r, bool ok) {
         for (std::size_t s = r.begin(); s < r.end() && ok; ++s) {
           const Index t = active_[s];
-          const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[t].Dm_inv);
+          const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[s].Dm_inv);
           const double J = F.determinant();
           ok = std::isfinite(J) && J > 0;
         }
@@ -80,10 +89,10 @@ void ElasticEnergy::add_gradient(const Positions& x, NodalVectors& grad) const {
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, active_.size(), 512), [&](const auto& r) {
     for (std::size_t s = r.begin(); s < r.end(); ++s) {
       const Index t = active_[s];
-      const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[t].Dm_inv);
+      const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[s].Dm_inv);
       Matrix3 P;
       material_[t]->evaluate(F, &P, nullptr);
-      local[s] = tet_gradient(P, rest_[t]);
+      local[s] = tet_gradient(P, rest_[s]);
     }
   });
   tbb::parallel_for(tbb::blocked_range<Index>(0, num_nodes_, 1024), [&](const auto& r) {
@@ -126,15 +135,15 @@ void ElasticEnergy::add_hessian(const Positions& x, BlockSparseMatrix& H) const 
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, active_.size(), 256), [&](const auto& r) {
     for (std::size_t s = r.begin(); s < r.end(); ++s) {
       const Index t = active_[s];
-      const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[t].Dm_inv);
+      const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[s].Dm_inv);
       Matrix3 P;
       Matrix9 dPdF;
       material_[t]->evaluate(F, &P, &dPdF);
       if (options_.project_hessians) dPdF = project_to_psd(dPdF);
-      const Eigen::Matrix<double, 9, 12> B = deformation_gradient_jacobian(rest_[t].Dm_inv);
+      const Eigen::Matrix<double, 9, 12> B = deformation_gradient_jacobian(rest_[s].Dm_inv);
       // Coefficient-wise products: for 12 x 9 x 12 Eigen's general product would pack and block.
       const Eigen::Matrix<double, 12, 9> BtA = B.transpose().lazyProduct(dPdF);
-      local[s].noalias() = rest_[t].volume * BtA.lazyProduct(B);
+      local[s].noalias() = rest_[s].volume * BtA.lazyProduct(B);
     }
   });
   // Gather by rows: each node's row blocks are written by one thread only.

@@ -34,12 +34,13 @@ class ElasticEnergy final : public Energy {
   void bind_pattern(const BlockSparseMatrix& H) override;
 
   const std::vector<Index>& deformable_tets() const { return active_; }
+  /// The rest shapes of deformable_tets(), in that order.
   const std::vector<TetRestShape>& rest_shapes() const { return rest_; }
 
  private:
   const Tets& tets_;
   std::vector<material::MaterialPtr> material_;  // per tet
-  std::vector<TetRestShape> rest_;               // per tet
+  std::vector<TetRestShape> rest_;               // per deformable tet, in active_'s order
   std::vector<Index> active_;                    // deformable tets
   ElasticEnergyOptions options_;
   Index num_nodes_ = 0;
