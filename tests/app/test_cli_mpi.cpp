@@ -10,6 +10,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -17,7 +19,9 @@
 #include "app_test_support.hpp"
 #include "mpi_test_support.hpp"
 #include "sinew/core/error.hpp"
+#include "sinew/model/model.hpp"
 #include "sinew/parallel/ranks.hpp"
+#include "sinew/scene/load_scene.hpp"
 
 namespace sinew::app_test {
 namespace {
@@ -227,15 +231,56 @@ TEST(RanksUnderMpirun, AFailureOnRankZeroIsThrownOnEveryRankWithItsKindAndMessag
   EXPECT_THROW(app::on_root_for_all([] { throw InputError("bad scene"); }), InputError);
 }
 
+TEST(RanksUnderMpirun, EachRankHoldsOnlyItsPartOfTheHessianAndThePartsAddUpToTheWhole) {
+  if (parallel::launched_size() <= 1) GTEST_SKIP() << "runs under mpirun (Mpi.TheRankHelpersWorkUnderMpirun)";
+  parallel::start();
+  // The hemisphere pressed halfway onto the rigid block: elastic tets, contact pairs, symmetry
+  // planes and a roller, each rank evaluating its share.
+  model::Model model = model::build_model(scene::parse_scene(example("hertz-ball"), ""));
+  solver::Objective& objective = *model.objective;
+  const fem::State state = model.dofs->initial_state(0.5);
+  const NodalVectors gradient = objective.full_gradient(state);
+  fem::SparseMatrix whole, part;
+  objective.set_hessian_summed(true);
+  objective.hessian(state, gradient, VectorX(), whole);
+  const Index whole_blocks = objective.full_hessian().num_blocks();
+  objective.set_hessian_summed(false);
+  EXPECT_TRUE(objective.hessian(state, gradient, VectorX(), part)) << "a new pattern must be reported on every rank";
+  const Index part_blocks = objective.full_hessian().num_blocks();
+  // Each rank's pattern holds its part of the mesh (and every node's diagonal block): well under
+  // the whole on two ranks.
+  EXPECT_LT(part_blocks, whole_blocks * 3 / 4) << "rank " << parallel::rank();
+  EXPECT_LT(part.nonZeros(), whole.nonZeros() * 3 / 4) << "rank " << parallel::rank();
+  ASSERT_EQ(part.rows(), whole.rows());
+  // Every entry of a part is in the whole pattern, and the parts add up to the summed K.
+  std::vector<double> sum(static_cast<std::size_t>(whole.nonZeros()), 0.0);
+  for (int column = 0; column < part.outerSize(); ++column)
+    for (fem::SparseMatrix::InnerIterator entry(part, column); entry; ++entry) {
+      const int* begin = whole.innerIndexPtr() + whole.outerIndexPtr()[column];
+      const int* end = whole.innerIndexPtr() + whole.outerIndexPtr()[column + 1];
+      const int* at = std::lower_bound(begin, end, static_cast<int>(entry.row()));
+      ASSERT_TRUE(at != end && *at == entry.row()) << "(" << entry.row() << ", " << column << ") outside the whole pattern";
+      sum[static_cast<std::size_t>(at - whole.innerIndexPtr())] += entry.value();
+    }
+  parallel::sum(sum.data(), sum.size());
+  double largest = 0, difference = 0;
+  for (std::size_t k = 0; k < sum.size(); ++k) {
+    largest = std::max(largest, std::abs(whole.valuePtr()[k]));
+    difference = std::max(difference, std::abs(sum[k] - whole.valuePtr()[k]));
+  }
+  EXPECT_GT(largest, 0);
+  EXPECT_LE(difference, 1e-12 * largest);
+}
+
 TEST_F(Mpi, TheRankHelpersWorkUnderMpirun) {
   // This test program itself on 2 ranks, running only the RanksUnderMpirun tests above.
   const CommandResult result = run_program(fs::read_symlink("/proc/self/exe").string(), {"--gtest_filter=RanksUnderMpirun.*", "--gtest_color=no"}, directory,
                                            with_timeout(mpirun(2)));
   EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
-  // Each of the 2 ranks ran both tests and none skipped.
+  // Each of the 2 ranks ran the three tests and none skipped.
   std::size_t passed = 0;
-  for (std::size_t at = result.out.find("[  PASSED  ] 2 tests"); at != std::string::npos;
-       at = result.out.find("[  PASSED  ] 2 tests", at + 1))
+  for (std::size_t at = result.out.find("[  PASSED  ] 3 tests"); at != std::string::npos;
+       at = result.out.find("[  PASSED  ] 3 tests", at + 1))
     ++passed;
   EXPECT_EQ(passed, 2u) << result.out;
   EXPECT_EQ(result.out.find("SKIPPED"), std::string::npos) << result.out;

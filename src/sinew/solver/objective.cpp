@@ -116,12 +116,27 @@ NodalVectors Objective::full_gradient(const fem::State& state, double* force_sca
   return g;
 }
 
+void Objective::set_hessian_summed(bool summed) {
+  if (summed != hessian_summed_) pattern_ready_ = false;  // the pattern is the whole or a part
+  hessian_summed_ = summed;
+}
+
 void Objective::rebuild_pattern() {
   std::vector<std::pair<Index, Index>> pairs;
-  for (auto* term : terms_) term->hessian_pattern(pairs);
-  H_.set_pattern(num_nodes_, std::move(pairs));
-  for (auto* term : terms_) term->bind_pattern(H_);
-  for (auto* share : separate_shares()) share->bind_pattern(H_);
+  if (assembles_parts()) {
+    // Only what this rank evaluates (docs/mpi.md, "Each rank adds its part of the tangent"); the
+    // diagonal blocks of every node come with set_pattern, so the ranks' K share their diagonal.
+    for (std::size_t i = 0; i < terms_.size(); ++i)
+      if (Energy* term = evaluated(i)) term->hessian_pattern(pairs);
+    H_.set_pattern(num_nodes_, std::move(pairs));
+    for (std::size_t i = 0; i < terms_.size(); ++i)
+      if (Energy* term = evaluated(i)) term->bind_pattern(H_);
+  } else {
+    for (auto* term : terms_) term->hessian_pattern(pairs);
+    H_.set_pattern(num_nodes_, std::move(pairs));
+    for (auto* term : terms_) term->bind_pattern(H_);
+    for (auto* share : separate_shares()) share->bind_pattern(H_);
+  }
   reduction_.bind(H_);
   pattern_ready_ = true;
   pattern_revision_ = pattern_revisions();
@@ -143,8 +158,9 @@ bool Objective::hessian(const fem::State& state, const NodalVectors& full_gradie
   const auto nnz_before = K.nonZeros();
   const auto rows_before = K.rows();
   // Every rank gets the whole full-space Hessian (the same pattern everywhere: the terms give
-  // it) and reduces it to the same K; or, with set_hessian_summed(false), its part, where the
-  // reduction's terms that do not come from H (viscosity, rigid-body rotation) are rank 0's.
+  // it) and reduces it to the same K; or, with set_hessian_summed(false), its part (on its own
+  // pattern), where the reduction's terms that do not come from H (viscosity, rigid-body
+  // rotation) are rank 0's.
   const bool whole = shares_.empty() || hessian_summed_;
   if (!shares_.empty() && hessian_summed_)
     parallel::sum(H_.values().empty() ? nullptr : H_.values().front().data(), 9 * H_.values().size());
@@ -152,7 +168,9 @@ bool Objective::hessian(const fem::State& state, const NodalVectors& full_gradie
     reduction_.reduce(state, H_, full_gradient, node_viscosity, K);
   else
     reduction_.reduce(state, H_, NodalVectors::Zero(full_gradient.rows(), 3), VectorX(), K);
-  return fresh || K.nonZeros() != nnz_before || K.rows() != rows_before;
+  fresh = fresh || K.nonZeros() != nnz_before || K.rows() != rows_before;
+  // The ranks' parts differ, and a new pattern is analyzed by all of them together.
+  return assembles_parts() ? parallel::any(fresh) : fresh;
 }
 
 }  // namespace sinew::solver

@@ -34,6 +34,7 @@ class Objective {
   bool hessian(const fem::State& state, const NodalVectors& full_gradient, const VectorX& node_viscosity,
                fem::SparseMatrix& K);
   /// Full-space Hessian of the last hessian() call (for tangent predictors and tests).
+  /// On several ranks with set_hessian_summed(false), this rank's part of it.
   const BlockSparseMatrix& full_hessian() const { return H_; }
   const fem::DofMap& dofs() const { return dofs_; }
   /// Wall-clock seconds spent so far in the terms' update() and begin_step() (collision
@@ -54,8 +55,11 @@ class Objective {
   /// default: every rank gets the whole K). False leaves each rank's K its own part: its terms'
   /// Hessians reduced to the unknowns, with the reduction's quasi-viscosity and rigid-body terms
   /// from the gradient on rank 0 only, so that the ranks' parts add up to the whole K (for a
-  /// linear solver that adds them, LinearSolver::adds_ranks_parts). No effect on one rank.
-  void set_hessian_summed(bool summed) { hessian_summed_ = summed; }
+  /// linear solver that adds them, LinearSolver::adds_ranks_parts). Each rank's Hessian pattern
+  /// then holds only the blocks of what it evaluates (its tets, the contact pairs' blocks, rank 0's
+  /// terms) and the diagonal blocks of every node, so its memory falls with the ranks; K keeps
+  /// every unknown's diagonal entry. No effect on one rank.
+  void set_hessian_summed(bool summed);
 
  private:
   void rebuild_pattern();
@@ -66,6 +70,8 @@ class Objective {
   /// The shares that are objects of their own (a term may be its own share, set to evaluate
   /// part of itself), which need the terms' calls (update, begin_step, ...) too.
   std::vector<Energy*> separate_shares() const;
+  /// On several ranks, each rank holds and assembles only its part of the Hessian.
+  bool assembles_parts() const { return !shares_.empty() && !hessian_summed_; }
   std::uint64_t pattern_revision_ = 0;
   const fem::DofMap& dofs_;
   fem::HessianReduction reduction_;  ///< q-space pattern of H_

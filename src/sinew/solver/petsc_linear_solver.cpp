@@ -50,8 +50,8 @@ class PetscSolver final : public LinearSolver {
     const bool blocked = block_size_ > 1 && n % block_size_ == 0;
     check(MatCreate(communicator(), &*A_), "MatCreate");
     if (distributed()) {
-      // Each rank passes its part of K (docs/mpi.md; the pattern is the same on every rank) and
-      // holds its own rows: the unknowns of the nodes it owns when set_row_owners said which
+      // Each rank passes its part of K (docs/mpi.md; on a pattern of its own) and holds its own
+      // rows: the unknowns of the nodes it owns when set_row_owners said which
       // (whole blocks of 3 when blocked), else a contiguous range. PETSc numbers the rows rank by
       // rank, so K is renumbered by order_.
       const bool owned = owner_.size() == static_cast<std::size_t>(n);
@@ -61,8 +61,7 @@ class PetscSolver final : public LinearSolver {
       local_rows_ = static_cast<PetscInt>(order_.first[me + 1] - order_.first[me]);
       std::vector<PetscInt> new_of_old(static_cast<std::size_t>(n));
       for (PetscInt i = 0; i < n; ++i) new_of_old[static_cast<std::size_t>(order_.old_of_new[static_cast<std::size_t>(i)])] = i;
-      // K renumbered whole (each rank adds its part of K into every row it touches), and this
-      // rank's rows of it for the preallocation.
+      // This rank's part of K renumbered (each rank adds its part into every row it touches).
       row_starts_.assign(1, 0);
       row_columns_.clear();
       value_source_.clear();
@@ -78,16 +77,11 @@ class PetscSolver final : public LinearSolver {
         }
         row_starts_.push_back(static_cast<PetscInt>(row_columns_.size()));
       }
-      const PetscInt base = row_starts_[static_cast<std::size_t>(first_row_)];
-      std::vector<PetscInt> local_starts(static_cast<std::size_t>(local_rows_) + 1);
-      for (PetscInt i = 0; i <= local_rows_; ++i)
-        local_starts[static_cast<std::size_t>(i)] = row_starts_[static_cast<std::size_t>(first_row_ + i)] - base;
-      if (!reported_layout_) report_layout(n);
       check(MatSetSizes(A_.get(), local_rows_, local_rows_, n, n), "MatSetSizes");
       check(MatSetType(A_.get(), MATMPIAIJ), "MatSetType");
       if (blocked) check(MatSetBlockSize(A_.get(), block_size_), "MatSetBlockSize");
-      check(MatMPIAIJSetPreallocationCSR(A_.get(), local_starts.data(), row_columns_.data() + base, nullptr),
-            "MatMPIAIJSetPreallocationCSR");
+      preallocate_union_of_parts(n, blocked);
+      if (!reported_layout_) report_layout(n);
     } else {
       first_row_ = 0;
       local_rows_ = n;
@@ -129,7 +123,10 @@ class PetscSolver final : public LinearSolver {
   }
 
   bool factorize(const SparseMatrix& K) override {
-    if (!A_.get() || !same_pattern(K)) analyze(K);
+    // The ranks analyze together (collective), when the part of any of them has changed.
+    bool stale = !A_.get() || !same_pattern(K);
+    if (distributed()) stale = parallel::any(stale);
+    if (stale) analyze(K);
     if (distributed()) {
       // Each rank adds its part of K (Objective::set_hessian_summed): the rows it touches, its own
       // and its neighbours' (PETSc sends those to their holders at assembly); its rows of zeros
@@ -266,17 +263,44 @@ class PetscSolver final : public LinearSolver {
     if (!given) check(PetscOptionsSetValue(nullptr, option, "0,0.1,0,1.2"), "PetscOptionsSetValue");
   }
 
+  /// Preallocates A_ (sized, typed, its block size set) for the union of the ranks' parts of K
+  /// (row_starts_ and row_columns_ on each rank): the parts' patterns differ, and a row's holder
+  /// learns the columns the other ranks add to it through PETSc's preallocator, which passes the
+  /// entries of rows held elsewhere to their holders. The matrix is then filled with zeros on the
+  /// union, so that its pattern is fixed (MAT_NEW_NONZERO_LOCATION_ERR). Collective.
+  void preallocate_union_of_parts(PetscInt n, bool blocked) {
+    MatHandle counter;
+    check(MatCreate(communicator(), &*counter), "MatCreate");
+    check(MatSetSizes(counter.get(), local_rows_, local_rows_, n, n), "MatSetSizes");
+    check(MatSetType(counter.get(), MATPREALLOCATOR), "MatSetType(preallocator)");
+    if (blocked) check(MatSetBlockSize(counter.get(), block_size_), "MatSetBlockSize");
+    check(MatSetUp(counter.get()), "MatSetUp");
+    std::vector<PetscScalar> zeros;
+    for (PetscInt row = 0; row < rows_; ++row) {
+      const auto begin = row_starts_[static_cast<std::size_t>(row)], end = row_starts_[static_cast<std::size_t>(row) + 1];
+      if (begin == end) continue;
+      zeros.assign(static_cast<std::size_t>(end - begin), 0.0);
+      check(MatSetValues(counter.get(), 1, &row, end - begin, row_columns_.data() + begin, zeros.data(), INSERT_VALUES),
+            "MatSetValues(preallocator)");
+    }
+    check(MatAssemblyBegin(counter.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyBegin(preallocator)");
+    check(MatAssemblyEnd(counter.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyEnd(preallocator)");
+    check(MatPreallocatorPreallocate(counter.get(), PETSC_TRUE, A_.get()), "MatPreallocatorPreallocate");
+  }
+
   /// Logs (rank 0, once) how the ranks share the first distributed matrix: their rows, the
   /// nonzeros that couple a row of one rank to a column of another, which PETSc's products and
   /// MUMPS's fronts exchange (few when the rows follow the mesh partition), and whether each rank
-  /// adds its part of the tangent. Collective.
+  /// adds its part of the tangent. Collective; A_ preallocated.
   void report_layout(PetscInt n) {
     reported_layout_ = true;
-    const auto begin = static_cast<std::size_t>(row_starts_[static_cast<std::size_t>(first_row_)]);
-    const auto end = static_cast<std::size_t>(row_starts_[static_cast<std::size_t>(first_row_ + local_rows_)]);
-    double counts[2] = {0, static_cast<double>(end - begin)};  // off-rank nonzeros, all nonzeros of its rows
-    for (std::size_t k = begin; k < end; ++k)
-      if (row_columns_[k] < first_row_ || row_columns_[k] >= first_row_ + local_rows_) ++counts[0];
+    Mat diagonal_part = nullptr, off_diagonal_part = nullptr;  // columns this rank holds, and the others'
+    const PetscInt* column_map = nullptr;
+    check(MatMPIAIJGetSeqAIJ(A_.get(), &diagonal_part, &off_diagonal_part, &column_map), "MatMPIAIJGetSeqAIJ");
+    MatInfo on_rank{}, off_rank{};
+    check(MatGetInfo(diagonal_part, MAT_LOCAL, &on_rank), "MatGetInfo");
+    check(MatGetInfo(off_diagonal_part, MAT_LOCAL, &off_rank), "MatGetInfo");
+    double counts[2] = {off_rank.nz_used, on_rank.nz_used + off_rank.nz_used};  // off-rank nonzeros, all of its rows'
     parallel::sum(counts, 2);
     const double rows[2] = {parallel::max(static_cast<double>(local_rows_)),
                             -parallel::max(-static_cast<double>(local_rows_))};
