@@ -225,8 +225,7 @@ io::VtuData RunOutput::vtu_data(const fem::State& state) const {
   data.points = state.x;
   data.tets = problem_.mesh.tets;
   data.point_fields.push_back({"displacement", MatrixX(state.x - problem_.mesh.rest)});
-  const auto measures =
-      fem::compute_tet_measures(state.x, problem_.mesh.tets, model_.tet_material, model_.elastic->rest_shapes());
+  const auto measures = fem::compute_tet_measures(state.x, *model_.elastic);
   data.cell_fields.push_back({"J", MatrixX(measures.J)});
   data.cell_fields.push_back({"von_mises_stress", MatrixX(measures.von_mises)});
   data.int_cell_fields.emplace_back("region", problem_.mesh.region);

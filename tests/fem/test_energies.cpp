@@ -91,6 +91,33 @@ TEST(ElasticEnergy, InvertedElementIsIllegal) {
   EXPECT_EQ(energy.value(x), std::numeric_limits<double>::infinity());
 }
 
+TEST(ElasticEnergy, TetMeasuresFollowEachTetWhenRigidTetsComeFirst) {
+  // The energy keeps the rest shapes of its deformable tets only; the measures must still read
+  // each tet's own shape. Every other tet rigid, the first among them, and a stretch of 1.2 in x:
+  // J = 1.2 and a positive stress in every deformable tet, J = 1 and no stress in the rigid ones.
+  auto p = st::box_problem(2, 1, 1, Vector3(0, 0, 0), Vector3(2, 1, 1), st::mooney_rivlin());
+  std::vector<material::MaterialPtr> materials = st::tet_materials(p);
+  for (std::size_t t = 0; t < materials.size(); t += 2) materials[t] = nullptr;
+  // Rest shapes of different sizes, so that a tet read with another's shape would show.
+  p.mesh.rest.col(1) *= 1.0 + 0.1 * p.mesh.rest.col(0).array().square().matrix().norm();
+  p.mesh.rest(0, 2) -= 0.05;
+  fem::ElasticEnergy energy(p.mesh.rest, p.mesh.tets, materials);
+  ASSERT_EQ(energy.deformable_tets().size(), energy.rest_shapes().size());
+  Positions x = p.mesh.rest;
+  x.col(0) *= 1.2;
+  const fem::TetMeasures m = fem::compute_tet_measures(x, energy);
+  ASSERT_EQ(m.J.size(), p.mesh.tets.rows());
+  for (Index t = 0; t < p.mesh.tets.rows(); ++t) {
+    if (materials[static_cast<std::size_t>(t)]) {
+      EXPECT_NEAR(m.J[t], 1.2, 1e-12) << "tet " << t;
+      EXPECT_GT(m.von_mises[t], 0) << "tet " << t;
+    } else {
+      EXPECT_EQ(m.J[t], 1.0) << "tet " << t;
+      EXPECT_EQ(m.von_mises[t], 0.0) << "tet " << t;
+    }
+  }
+}
+
 TEST(ElasticEnergy, ProjectedHessianIsPositiveSemiDefinite) {
   auto p = st::box_problem(2, 1, 1, Vector3(0, 0, 0), Vector3(2, 1, 1), st::mooney_rivlin());
   fem::ElasticEnergy energy(p.mesh.rest, p.mesh.tets, st::tet_materials(p), {.project_hessians = true});

@@ -161,15 +161,16 @@ void ElasticEnergy::add_hessian(const Positions& x, BlockSparseMatrix& H) const 
   });
 }
 
-TetMeasures compute_tet_measures(const Positions& x, const Tets& tets,
-                                 const std::vector<material::MaterialPtr>& tet_material,
-                                 const std::vector<TetRestShape>& rest) {
+TetMeasures compute_tet_measures(const Positions& x, const ElasticEnergy& elastic) {
+  const Tets& tets = elastic.tets();
+  const std::vector<Index>& deformable = elastic.deformable_tets();
+  const std::vector<TetRestShape>& rest = elastic.rest_shapes();  // in deformable's order
   TetMeasures m;
   m.J = VectorX::Ones(tets.rows());
   m.von_mises = VectorX::Zero(tets.rows());
-  tbb::parallel_for(Index(0), static_cast<Index>(tets.rows()), [&](Index t) {
-    if (!tet_material[t]) return;
-    const Matrix3 F = deformation_gradient(gather_tet(x, tets, t), rest[t].Dm_inv);
+  tbb::parallel_for(std::size_t(0), deformable.size(), [&](std::size_t s) {
+    const Index t = deformable[s];
+    const Matrix3 F = deformation_gradient(gather_tet(x, tets, t), rest[s].Dm_inv);
     const double J = F.determinant();
     m.J[t] = J;
     if (!(J > 0)) {
@@ -177,7 +178,7 @@ TetMeasures compute_tet_measures(const Positions& x, const Tets& tets,
       return;
     }
     Matrix3 P;
-    tet_material[t]->evaluate(F, &P, nullptr);
+    elastic.tet_materials()[static_cast<std::size_t>(t)]->evaluate(F, &P, nullptr);
     const Matrix3 sigma = P * F.transpose() / J;
     const Matrix3 dev = sigma - sigma.trace() / 3.0 * Matrix3::Identity();
     m.von_mises[t] = std::sqrt(1.5 * dev.squaredNorm());

@@ -34,6 +34,9 @@ class ElasticEnergy final : public Energy {
   void bind_pattern(const BlockSparseMatrix& H) override;
 
   const std::vector<Index>& deformable_tets() const { return active_; }
+  const Tets& tets() const { return tets_; }
+  /// Per tet (#T), null for rigid tets and for the tets of another rank's share.
+  const std::vector<material::MaterialPtr>& tet_materials() const { return material_; }
   /// The rest shapes of deformable_tets(), in that order.
   const std::vector<TetRestShape>& rest_shapes() const { return rest_; }
 
@@ -56,8 +59,7 @@ struct TetMeasures {
   VectorX J;
   VectorX von_mises;
 };
-TetMeasures compute_tet_measures(const Positions& x, const Tets& tets,
-                                 const std::vector<material::MaterialPtr>& tet_material,
-                                 const std::vector<TetRestShape>& rest);
+/// The measures of every tet of `elastic`'s mesh (#T) at positions x (#V x 3).
+TetMeasures compute_tet_measures(const Positions& x, const ElasticEnergy& elastic);
 
 }  // namespace sinew::fem
