@@ -13,11 +13,13 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "parallel_run.hpp"
 #include "app_test_support.hpp"
 #include "mpi_test_support.hpp"
+#include "sinew/contact/contact_energy.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/model/model.hpp"
 #include "sinew/parallel/ranks.hpp"
@@ -272,15 +274,63 @@ TEST(RanksUnderMpirun, EachRankHoldsOnlyItsPartOfTheHessianAndThePartsAddUpToThe
   EXPECT_LE(difference, 1e-12 * largest);
 }
 
+TEST(RanksUnderMpirun, GatherAllConcatenatesEveryRanksBytesInRankOrder) {
+  if (parallel::launched_size() <= 1) GTEST_SKIP() << "runs under mpirun (Mpi.TheRankHelpersWorkUnderMpirun)";
+  parallel::start();
+  // Rank r gives r + 1 bytes of value r (rank 0 one, rank 1 two): a different length on each.
+  const std::vector<char> mine(static_cast<std::size_t>(parallel::rank() + 1), static_cast<char>(parallel::rank()));
+  std::vector<char> expected;
+  for (int r = 0; r < parallel::size(); ++r) expected.insert(expected.end(), static_cast<std::size_t>(r + 1), static_cast<char>(r));
+  EXPECT_EQ(parallel::gather_all(mine), expected);
+  EXPECT_EQ(parallel::gather_all({}).size(), 0u);
+}
+
+TEST(RanksUnderMpirun, EachRankDetectsThePairsOfItsTetsAndEveryRankEndsWithAllOfThem) {
+  if (parallel::launched_size() <= 1) GTEST_SKIP() << "runs under mpirun (Mpi.TheRankHelpersWorkUnderMpirun)";
+  parallel::start();
+  model::Model model = model::build_model(scene::parse_scene(example("hertz-ball"), ""));
+  // The ball's nodes (those of the deformable tets) lowered 0.3 mm into the rigid block.
+  fem::State state = model.dofs->initial_state(0.0);
+  const Tets& tets = model.elastic->tets();
+  std::vector<char> in_ball(static_cast<std::size_t>(state.x.rows()), 0);
+  for (const Index e : model.elastic->deformable_tets())
+    for (int k = 0; k < 4; ++k) in_ball[static_cast<std::size_t>(tets(e, k))] = 1;
+  for (Index i = 0; i < state.x.rows(); ++i)
+    if (in_ball[static_cast<std::size_t>(i)]) state.x(i, 2) -= 0.3;
+  model.objective->full_gradient(state);  // updates the contact pairs at state.x on every rank
+  const contact::CollisionSet& split = model.contact->collisions();
+  ASSERT_TRUE(split.is_current(state.x));
+  // The model split the detection by the tets' owners (docs/mpi.md)...
+  const auto& detects = split.share().detects_tet;
+  ASSERT_EQ(detects.size(), model.tet_owner.size());
+  for (std::size_t t = 0; t < detects.size(); ++t) ASSERT_EQ(detects[t] != 0, model.tet_owner[t] == parallel::rank()) << t;
+  // ...and every rank holds the pairs a whole detection finds, each once, with the same supports.
+  contact::CollisionSet whole(split.shared_geometry(), split.method(), split.candidate_cap());
+  whole.update(state.x);
+  ASSERT_GT(whole.pairs().size(), 20u);
+  auto sorted = [](std::vector<std::pair<Index, Index>> pairs) {
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+  };
+  EXPECT_EQ(sorted(split.pair_indices()), sorted(whole.pair_indices()));
+  EXPECT_EQ(split.times().candidates, whole.times().candidates);
+  const double energy = contact::contact_energy_value(split, state.x);
+  EXPECT_NEAR(energy, contact::contact_energy_value(whole, state.x), 1e-12 * std::abs(energy));
+  // Both ranks detected some of them: the contact zone lies across the partition here.
+  std::size_t own = 0;
+  for (const auto& [f, t] : whole.pair_indices()) own += model.tet_owner[static_cast<std::size_t>(t)] == parallel::rank();
+  EXPECT_GT(own, 0u) << "rank " << parallel::rank();
+}
+
 TEST_F(Mpi, TheRankHelpersWorkUnderMpirun) {
   // This test program itself on 2 ranks, running only the RanksUnderMpirun tests above.
   const CommandResult result = run_program(fs::read_symlink("/proc/self/exe").string(), {"--gtest_filter=RanksUnderMpirun.*", "--gtest_color=no"}, directory,
                                            with_timeout(mpirun(2)));
   EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
-  // Each of the 2 ranks ran the three tests and none skipped.
+  // Each of the 2 ranks ran the five tests and none skipped.
   std::size_t passed = 0;
-  for (std::size_t at = result.out.find("[  PASSED  ] 3 tests"); at != std::string::npos;
-       at = result.out.find("[  PASSED  ] 3 tests", at + 1))
+  for (std::size_t at = result.out.find("[  PASSED  ] 5 tests"); at != std::string::npos;
+       at = result.out.find("[  PASSED  ] 5 tests", at + 1))
     ++passed;
   EXPECT_EQ(passed, 2u) << result.out;
   EXPECT_EQ(result.out.find("SKIPPED"), std::string::npos) << result.out;

@@ -159,6 +159,108 @@ TEST_P(CollisionSetMethods, MoreCandidatesThanTheCapOverflowWithoutPairs) {
   EXPECT_FALSE(capped.overflowed());
 }
 
+TEST_P(CollisionSetMethods, PartsThatSplitTheTetsAndJoinTheirPairsFindTheWholeSetsPairs) {
+  // Two parts in one process: part 1 keeps its own pairs (a join that gathers nothing), part 0
+  // joins part 1's, as MPI's gather would on two ranks (docs/mpi.md).
+  const auto boxes = st::two_boxes(2, Vector3(0.55, 0.3, -0.2), 0.4, 7.0, false);
+  const auto moved = st::two_boxes(2, Vector3(0.7, 0.1, 0.05), 0.3, 7.0, false);
+  const auto tets = static_cast<std::size_t>(boxes.geometry.tets.rows());
+  CollisionShare part0, part1;
+  part0.detects_tet.resize(tets);
+  part1.detects_tet.resize(tets);
+  for (std::size_t t = 0; t < tets; ++t) (t % 3 == 0 ? part1 : part0).detects_tet[t] = 1;
+  std::vector<ActivePair> pairs_of_1;
+  std::size_t candidates_of_1 = 0;
+  part1.join = [&](std::vector<ActivePair>& pairs, std::size_t& candidates) {
+    pairs_of_1 = pairs;
+    candidates_of_1 = candidates;
+  };
+  part0.join = [&](std::vector<ActivePair>& pairs, std::size_t& candidates) {
+    pairs.insert(pairs.end(), pairs_of_1.begin(), pairs_of_1.end());
+    candidates += candidates_of_1;
+  };
+  CollisionSet whole(boxes.geometry, GetParam()), one(boxes.geometry, GetParam()), zero(boxes.geometry, GetParam());
+  one.set_share(part1);
+  zero.set_share(part0);
+  for (const Positions* x : {&boxes.x, &moved.x}) {
+    whole.update(*x);
+    one.update(*x);
+    zero.update(*x);
+    ASSERT_GT(whole.pairs().size(), 10u);
+    // Part 1 detected the pairs of its tets only, and part 0 ends with all of them.
+    PairSet expected_of_1;
+    for (const auto& [f, t] : whole.pair_indices())
+      if (t % 3 == 0) expected_of_1.emplace(f, t);
+    ASSERT_FALSE(expected_of_1.empty());
+    EXPECT_EQ(as_set(one.pair_indices()), expected_of_1);
+    EXPECT_EQ(as_set(zero.pair_indices()), as_set(whole.pair_indices()));
+    EXPECT_EQ(zero.pairs().size(), whole.pairs().size());
+    EXPECT_EQ(zero.times().candidates, whole.times().candidates);
+    EXPECT_LT(one.times().candidates, whole.times().candidates);
+    // Each pair's support is the whole set's (the same narrow phase of the same pair).
+    for (const ActivePair& p : zero.pairs()) {
+      const auto it = std::find_if(whole.pairs().begin(), whole.pairs().end(),
+                                   [&](const ActivePair& w) { return w.triangle == p.triangle && w.tet == p.tet; });
+      ASSERT_NE(it, whole.pairs().end());
+      EXPECT_EQ(p.support.polygon.count, it->support.polygon.count);
+      EXPECT_EQ(p.support.points.count, it->support.points.count);
+      EXPECT_EQ(p.penalty, it->penalty);
+    }
+  }
+  std::vector<std::pair<Index, Index>> joined, all;
+  zero.append_pattern(joined);
+  whole.append_pattern(all);
+  EXPECT_EQ(as_set(joined), as_set(all));
+  EXPECT_EQ(zero.pattern_revision(), whole.pattern_revision());
+
+  // Back to one part: detection is whole again.
+  zero.set_share({});
+  zero.update(boxes.x);
+  whole.update(boxes.x);
+  EXPECT_EQ(zero.pair_indices(), whole.pair_indices());
+}
+
+TEST_P(CollisionSetMethods, PartsThatTogetherPassTheCapOverflowOnEveryPart) {
+  const auto boxes = st::two_boxes(2, Vector3(0.62, 0.31, 0.17), 0.3, 7.0);
+  CollisionSet roomy(boxes.geometry, GetParam());
+  roomy.update(boxes.x);
+  const auto candidates = static_cast<std::size_t>(roomy.times().candidates);
+  // A part whose own candidates are under the cap, joined with another's that bring the sum
+  // over it: no pairs, overflowed, nothing added to the pattern.
+  CollisionShare half;
+  half.detects_tet.resize(static_cast<std::size_t>(boxes.geometry.tets.rows()));
+  for (std::size_t t = 0; t < half.detects_tet.size(); t += 2) half.detects_tet[t] = 1;
+  half.join = [&](std::vector<ActivePair>&, std::size_t& count) { count += candidates; };
+  CollisionSet part(boxes.geometry, GetParam(), candidates);
+  part.set_share(half);
+  part.update(boxes.x);
+  EXPECT_TRUE(part.overflowed());
+  EXPECT_TRUE(part.pairs().empty());
+  EXPECT_GT(part.times().candidates, static_cast<Index>(candidates));
+  EXPECT_EQ(part.pattern_size(), 0u);
+}
+
+TEST(CollisionSet, RejectsAShareOfTheWrongSizeOrWithoutAJoin) {
+  const auto boxes = st::two_boxes(2, Vector3(0.5, 0.2, 0.1), 0.3, 7.0);
+  CollisionSet set(boxes.geometry, ContactMethod::Area);
+  CollisionShare wrong;
+  wrong.detects_tet.assign(3, 1);
+  wrong.join = [](std::vector<ActivePair>&, std::size_t&) {};
+  EXPECT_THROW(
+      {
+        try {
+          set.set_share(wrong);
+        } catch (const Error& e) {
+          EXPECT_NE(std::string(e.what()).find("3 tet flags for"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      Error);
+  CollisionShare no_join;
+  no_join.detects_tet.assign(static_cast<std::size_t>(boxes.geometry.tets.rows()), 1);
+  EXPECT_THROW(set.set_share(no_join), Error);
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, CollisionSetMethods, ::testing::Values(ContactMethod::Area, ContactMethod::Point),
                          [](const auto& info) { return info.param == ContactMethod::Area ? "Area" : "Point"; });
 

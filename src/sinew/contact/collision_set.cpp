@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <chrono>
+#include <limits>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -33,20 +34,41 @@ CollisionSet::CollisionSet(std::shared_ptr<const ContactGeometry> geometry, Cont
   candidate_cap_ =
       candidate_cap > 0 ? candidate_cap : std::max<std::size_t>(100000, 20 * static_cast<std::size_t>(g.tets.rows()));
   tet_has_depth_.resize(static_cast<std::size_t>(g.tets.rows()));
-  const auto num_bodies = static_cast<std::size_t>(g.penalty.rows());
-  trees_.resize(num_bodies);
   for (Index t = 0; t < g.tets.rows(); ++t) {
     double m = 0;
     for (int k = 0; k < 4; ++k) m = std::max(m, g.depth[g.tets(t, k)]);
     tet_has_depth_[static_cast<std::size_t>(t)] = m > 0;
-    if (m > 0) trees_[static_cast<std::size_t>(g.tet_body[t])].tets.push_back(t);
+  }
+  assign_trees();
+}
+
+void CollisionSet::assign_trees() {
+  const ContactGeometry& g = *geometry_;
+  const auto num_bodies = static_cast<std::size_t>(g.penalty.rows());
+  trees_.assign(num_bodies, {});
+  for (Index t = 0; t < g.tets.rows(); ++t) {
+    const auto k = static_cast<std::size_t>(t);
+    if (tet_has_depth_[k] && (share_.detects_tet.empty() || share_.detects_tet[k]))
+      trees_[static_cast<std::size_t>(g.tet_body[t])].tets.push_back(t);
   }
   // Which penalties are positive never changes (set_penalty).
-  trees_of_body_.resize(num_bodies);
+  trees_of_body_.assign(num_bodies, {});
   for (std::size_t a = 0; a < num_bodies; ++a)
     for (std::size_t b = 0; b < num_bodies; ++b)
       if (g.penalty(static_cast<Index>(a), static_cast<Index>(b)) > 0 && !trees_[b].tets.empty())
         trees_of_body_[a].push_back(static_cast<int>(b));
+  tree_built_ = false;
+}
+
+void CollisionSet::set_share(CollisionShare share) {
+  if (!share.detects_tet.empty()) {
+    if (share.detects_tet.size() != tet_has_depth_.size())
+      throw Error(fmt::format("collision: {} tet flags for {} tets", share.detects_tet.size(), tet_has_depth_.size()));
+    if (!share.join) throw Error("collision: a share of the tets without a way to join the parts' pairs");
+  }
+  share_ = share.detects_tet.empty() ? CollisionShare{} : std::move(share);
+  assign_trees();
+  positions_.resize(0, 3);  // the next update recomputes the pairs (on every part)
 }
 
 void CollisionSet::fit_trees(const Positions& x, bool rebuild) {
@@ -93,16 +115,21 @@ void CollisionSet::update(const Positions& x) {
   const auto candidates =
       collision::triangle_tet_candidates(x, g.surface, g.tets, trees_, g.surface_body, trees_of_body_);
   times_.query = seconds_since(t0);
-  times_.candidates = static_cast<Index>(candidates.size());
-  overflowed_ = candidates.size() > candidate_cap_;
+  std::size_t count = candidates.size();
+  t0 = Clock::now();
+  // A part whose own candidates pass the cap passes it for all of them: it finds no pairs.
+  if (count <= candidate_cap_)
+    find_pairs(x, candidates);
+  else
+    active_.clear();
+  if (share_.join) share_.join(active_, count);
+  times_.clip = seconds_since(t0);
+  times_.candidates = static_cast<Index>(std::min<std::size_t>(count, std::numeric_limits<Index>::max()));
+  overflowed_ = count > candidate_cap_;
   if (overflowed_) {
     active_.clear();
-    times_.clip = 0;
     return;
   }
-  t0 = Clock::now();
-  find_pairs(x, candidates);
-  times_.clip = seconds_since(t0);
   grow_pattern();
 }
 

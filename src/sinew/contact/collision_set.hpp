@@ -21,6 +21,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <unordered_set>
 #include <utility>
@@ -51,6 +52,19 @@ struct ActivePair {
   PairSupport support;
 };
 
+/// How the parts of a run on several processes split the detection (docs/mpi.md, "Collision
+/// detection split by tet"): each part queries the trees of the tets it detects only, and `join`
+/// gathers the parts' pairs so that every part ends with all of them.
+struct CollisionShare {
+  /// Per tet of the geometry (#T): nonzero when this part detects the pairs of that tet.
+  std::vector<char> detects_tet;
+  /// Collective: every part calls it at every update that recomputes the pairs (an update to
+  /// the positions of the last one recomputes nothing, on every part alike). On entry `pairs`
+  /// holds this part's pairs and `candidates` its broad-phase candidates; on return every
+  /// part's pairs in part order and the sum of the candidates, the same on every part.
+  std::function<void(std::vector<ActivePair>& pairs, std::size_t& candidates)> join;
+};
+
 class CollisionSet {
  public:
   /// `candidate_cap`: most broad-phase candidates before the configuration is overflowed;
@@ -58,6 +72,14 @@ class CollisionSet {
   /// (validate_contact_geometry).
   CollisionSet(std::shared_ptr<const ContactGeometry> geometry, ContactMethod method, std::size_t candidate_cap = 0);
   CollisionSet(ContactGeometry geometry, ContactMethod method, std::size_t candidate_cap = 0);
+
+  /// Splits the detection among parts (CollisionShare; every part of the split calls it). An
+  /// empty `detects_tet` detects every tet alone again. The trees are built anew at the next
+  /// update. Throws sinew::Error when `detects_tet` is neither empty nor one per tet, or has no
+  /// join.
+  void set_share(CollisionShare share);
+  /// The split in force (an empty `detects_tet`: this set detects every tet).
+  const CollisionShare& share() const { return share_; }
 
   /// Builds the tree anew at x (#V x 3) and recomputes the pairs (start of a load or time step).
   /// Throws std::invalid_argument when x does not have one row per node of the geometry.
@@ -71,8 +93,8 @@ class CollisionSet {
   /// The positions of the last update (#V x 3; 0 rows before the first).
   const Positions& positions() const { return positions_; }
 
-  /// True when the last update's broad phase found more candidates than candidate_cap(); the
-  /// pairs are then empty.
+  /// True when the last update's broad phase found more candidates than candidate_cap() (of all
+  /// parts together, when shared); the pairs are then empty.
   bool overflowed() const { return overflowed_; }
   /// The colliding pairs at the last update, in the broad phase's order.
   const std::vector<ActivePair>& pairs() const { return active_; }
@@ -124,6 +146,8 @@ class CollisionSet {
 
  private:
   void check_size(const Positions& x, const char* caller) const;
+  /// Fills trees_ (the tets with depth that this part detects, per body) and trees_of_body_.
+  void assign_trees();
   /// Builds (rebuild) or refits every body's tree at x.
   void fit_trees(const Positions& x, bool rebuild);
   /// Narrow phase of the candidates at x into active_.
@@ -138,6 +162,7 @@ class CollisionSet {
   std::vector<char> tet_has_depth_;
   /// Per body: a tree over its tets that have depth (those without are never a pair).
   std::vector<collision::TetSubsetTree> trees_;
+  CollisionShare share_;  ///< empty: this set detects every tet
   /// Per body of the surface triangles: the trees of the bodies it has a positive penalty with
   /// (the broad phase never tests a triangle against a body it cannot contact).
   std::vector<std::vector<int>> trees_of_body_;

@@ -57,11 +57,18 @@ bool ContactEnergy::is_valid(const Positions& x) const {
   return !collisions_.overflowed();
 }
 
-void ContactEnergy::set_share(std::vector<int> tet_owner, int part) {
+void ContactEnergy::set_share(std::vector<int> tet_owner, int part, PairJoin join) {
   if (!tet_owner.empty() && tet_owner.size() != static_cast<std::size_t>(geometry().tets.rows()))
     throw Error(fmt::format("contact: {} tet owners for {} tets", tet_owner.size(), geometry().tets.rows()));
   tet_owner_ = std::move(tet_owner);
   share_part_ = part;
+  CollisionShare detection;
+  if (!tet_owner_.empty() && join) {
+    detection.detects_tet.resize(tet_owner_.size());
+    for (std::size_t t = 0; t < tet_owner_.size(); ++t) detection.detects_tet[t] = tet_owner_[t] == part;
+    detection.join = std::move(join);
+  }
+  collisions_.set_share(std::move(detection));
 }
 
 std::vector<std::size_t> ContactEnergy::shared_pairs() const {

@@ -16,7 +16,9 @@
 /// Units: lengths L, depths L, penalties ε in force / L³ (stress per length: a penetration g
 /// meets a pressure of about ε g), energy in force × L, gradient in force.
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -25,6 +27,9 @@
 #include "sinew/core/energy.hpp"
 
 namespace sinew::contact {
+
+/// Joins the pairs the parts of a run detected (CollisionShare::join).
+using PairJoin = std::function<void(std::vector<ActivePair>& pairs, std::size_t& candidates)>;
 
 class ContactEnergy final : public Energy {
  public:
@@ -69,9 +74,12 @@ class ContactEnergy final : public Energy {
   const CollisionSet& collisions() const { return collisions_; }
   /// On several ranks (docs/mpi.md, "Who owns what"): value(), add_gradient() and add_hessian()
   /// take only the pairs whose tet `tet_owner` (#T of the geometry, a rank per tet) gives to
-  /// `part`; collision detection, validity and the pattern stay whole. Empty (the default): all.
-  /// Throws sinew::Error when `tet_owner` is neither empty nor one per tet.
-  void set_share(std::vector<int> tet_owner, int part);
+  /// `part`. With a `join` the parts also split the collision detection by the same owners
+  /// (CollisionSet::set_share; every part must then set its share alike), and the join leaves
+  /// every part with all the pairs; without one, detection runs whole on every part. Validity and
+  /// the pattern are whole either way. Empty `tet_owner` (the default): all pairs, whole
+  /// detection. Throws sinew::Error when `tet_owner` is neither empty nor one per tet.
+  void set_share(std::vector<int> tet_owner, int part, PairJoin join = {});
   /// The active (triangle, tet) pairs at the last update(), in the broad phase's order.
   std::vector<std::pair<Index, Index>> active_pairs() const { return collisions_.pair_indices(); }
   const ContactGeometry& geometry() const { return collisions_.geometry(); }

@@ -8,6 +8,7 @@
 
 #include "sinew/contact/body_overlap.hpp"
 #include "sinew/contact/contact_enforcement.hpp"
+#include "sinew/contact/pair_exchange.hpp"
 #include "sinew/contact/contact_time_step.hpp"
 #include "sinew/core/error.hpp"
 #include "sinew/core/log.hpp"
@@ -127,6 +128,18 @@ void check_explicit_mass(const Model& model) {
         "part that is not fixed or prescribed a density > 0");
 }
 
+/// Gathers the contact pairs each rank detected among its tets onto every rank, in rank order,
+/// and sums their candidates (docs/mpi.md, "Collision detection split by tet").
+contact::PairJoin rank_pair_join(const contact::ContactEnergy& contact) {
+  const contact::ContactMethod method = contact.options().method;
+  return [method](std::vector<contact::ActivePair>& pairs, std::size_t& candidates) {
+    std::vector<char> bytes;
+    contact::pack_pairs(pairs, method, bytes);
+    pairs = contact::unpack_pairs(parallel::gather_all(bytes), method);
+    candidates = static_cast<std::size_t>(parallel::sum(static_cast<double>(candidates)));
+  };
+}
+
 /// The objective over the current terms (elastic, external, contact, inertia, viscosity).
 void rebuild_objective(Model& model) {
   std::vector<Energy*> terms{model.elastic.get(), model.external.get()};
@@ -141,7 +154,7 @@ void rebuild_objective(Model& model) {
   if (parallel::size() > 1) {
     // Several ranks (docs/mpi.md): each evaluates the tets it owns and the contact pairs whose tet
     // it owns (the contact geometry's tets are the mesh's); the other terms are rank 0's.
-    if (model.contact) model.contact->set_share(model.tet_owner, parallel::rank());
+    if (model.contact) model.contact->set_share(model.tet_owner, parallel::rank(), rank_pair_join(*model.contact));
     std::vector<Energy*> shares(terms.size(), nullptr);
     for (std::size_t i = 0; i < terms.size(); ++i) {
       if (terms[i] == model.elastic.get()) shares[i] = model.elastic_share.get();

@@ -130,6 +130,27 @@ std::string broadcast(const std::string& text) {
   return std::string(bytes.begin(), bytes.end());
 }
 
+std::vector<char> gather_all(const std::vector<char>& bytes) {
+  if (!g_started) return bytes;
+  // Every rank learns every count first, so that all of them throw together when too large.
+  constexpr long long kLimit = (1LL << 31) - 1;
+  const int mine = bytes.size() > static_cast<std::size_t>(kLimit) ? -1 : static_cast<int>(bytes.size());
+  std::vector<int> counts(static_cast<std::size_t>(g_size));
+  check(MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Allgather");
+  std::vector<int> offsets(counts.size());
+  long long total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    offsets[r] = static_cast<int>(std::min(total, kLimit));
+    total += counts[r] < 0 ? kLimit + 1 : counts[r];
+  }
+  if (total > kLimit) throw Error(fmt::format("MPI: more than 2^31 bytes to gather from {} ranks", g_size));
+  std::vector<char> all(static_cast<std::size_t>(total));
+  check(MPI_Allgatherv(bytes.data(), mine, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE,
+                       MPI_COMM_WORLD),
+        "MPI_Allgatherv");
+  return all;
+}
+
 void barrier() {
   if (g_started) check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
 }

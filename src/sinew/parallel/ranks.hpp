@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "sinew/core/share.hpp"
 
@@ -42,6 +43,10 @@ bool any(bool value);
 int broadcast(int value);
 /// `text` of rank 0, on every rank.
 std::string broadcast(const std::string& text);
+/// Every rank's `bytes` (a different length on each rank allowed), concatenated in rank order,
+/// on every rank. Throws sinew::Error on every rank when the total passes 2^31 - 1 bytes (MPI's
+/// int counts).
+std::vector<char> gather_all(const std::vector<char>& bytes);
 /// Waits until every rank has come here.
 void barrier();
 /// Ends every rank of the run with exit code `code` (a failure on one rank would leave the
