@@ -27,14 +27,32 @@ bool tet_crosses_triangle_plane(const PairGeometry& pg) {
   return on >= 3;
 }
 
+bool tet_within_triangle_edges(const PairGeometry& pg) {
+  const Vector3 q[3] = {pg.triangle.row(0), pg.triangle.row(1), pg.triangle.row(2)};
+  const Vector3 normal = (q[1] - q[0]).cross(q[2] - q[0]);
+  if (!(normal.squaredNorm() > 0)) return true;  // degenerate triangle: let the clip decide
+  const double scale = std::max(pg.triangle.cwiseAbs().maxCoeff(), pg.tet.cwiseAbs().maxCoeff());
+  for (int i = 0; i < 3; ++i) {
+    const Vector3& a = q[i];
+    const Vector3& b = q[(i + 1) % 3];
+    // In the triangle's plane, perpendicular to edge ab, pointing to the opposite vertex.
+    const Vector3 inward = normal.cross(b - a);
+    const double margin = 1e-9 * inward.norm() * scale;
+    bool beyond = true;
+    for (int k = 0; k < 4 && beyond; ++k) beyond = inward.dot(Vector3(pg.tet.row(k)) - a) < -margin;
+    if (beyond) return false;
+  }
+  return true;
+}
+
 namespace {
 
 // Most candidates of the broad phase are neighbours that merely touch the triangle's plane from
-// one side; the plane test rejects them before clipping.
+// one side, or lie beside the triangle; the plane and edge tests reject them before clipping.
 const PairIntegrator kAreaIntegrator{
     ContactMethod::Area,
     [](const PairGeometry& pg, PairSupport& s) {
-      if (!tet_crosses_triangle_plane(pg)) return false;
+      if (!tet_crosses_triangle_plane(pg) || !tet_within_triangle_edges(pg)) return false;
       s.polygon = collision::clip_triangle_tet(pg.triangle, pg.tet);
       return s.polygon.count >= 3;
     },

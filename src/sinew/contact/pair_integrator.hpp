@@ -48,4 +48,11 @@ const PairIntegrator& pair_integrator(ContactMethod method);
 /// A tet with a face in the plane is kept (its intersection with the triangle can have area).
 bool tet_crosses_triangle_plane(const PairGeometry& pair);
 
+/// False when the tet lies wholly beyond one of the triangle's edges: every tet vertex on the far
+/// side of the plane through that edge perpendicular to the triangle, by more than 1e-9 of the
+/// pair's coordinate scale, so triangle ∩ tet is empty. A separating-axis test (the axes n × e of
+/// the triangle's normal n and edges e) that costs a fraction of a clip; near-touching and
+/// degenerate pairs are kept for the clip to decide.
+bool tet_within_triangle_edges(const PairGeometry& pair);
+
 }  // namespace sinew::contact
