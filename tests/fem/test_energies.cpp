@@ -1,9 +1,11 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 
 #include <Eigen/Eigenvalues>
 
+#include "sinew/core/error.hpp"
 #include "sinew/fem/elastic_energy.hpp"
 #include "sinew/fem/external_force_energy.hpp"
 #include "support/fd_check.hpp"
@@ -115,6 +117,43 @@ TEST(ElasticEnergy, TetMeasuresFollowEachTetWhenRigidTetsComeFirst) {
       EXPECT_EQ(m.J[t], 1.0) << "tet " << t;
       EXPECT_EQ(m.von_mises[t], 0.0) << "tet " << t;
     }
+  }
+}
+
+// bind_pattern runs in parallel over the tets; every block it binds is the pattern's, and a
+// pattern without the tets' blocks is refused, whichever thread meets the gap.
+TEST(ElasticEnergy, BindingFindsEveryTetBlockAndRefusesAPatternWithoutThem) {
+  auto p = st::box_problem(6, 5, 4, Vector3(0, 0, 0), Vector3(1, 1, 0.5), st::mooney_rivlin());
+  fem::ElasticEnergy energy(p.mesh.rest, p.mesh.tets, st::tet_materials(p));
+  std::vector<std::pair<Index, Index>> pairs;
+  energy.hessian_pattern(pairs);
+  const Index num_nodes = static_cast<Index>(p.mesh.rest.rows());
+  BlockSparseMatrix whole;
+  whole.set_pattern(num_nodes, pairs);
+  energy.bind_pattern(whole);
+  // Blocks bound to the wrong places would break the Hessian's symmetry or its null space of
+  // rigid translations (each tet's blocks sum to zero along a row of nodes).
+  const Positions x = perturbed(p.mesh.rest, 0.02, 3);
+  energy.add_hessian(x, whole);
+  const MatrixX dense = whole.to_dense();
+  EXPECT_GT(dense.norm(), 0.0);
+  EXPECT_LT((dense - dense.transpose()).norm(), 1e-10 * dense.norm());
+  for (int k = 0; k < 3; ++k) {
+    VectorX translation = VectorX::Zero(dense.cols());
+    for (Index a = 0; a < num_nodes; ++a) translation[3 * a + k] = 1.0;
+    EXPECT_LT((dense * translation).norm(), 1e-10 * dense.norm()) << "direction " << k;
+  }
+  // Without the blocks of the last node's pairs: refused with the reason.
+  std::vector<std::pair<Index, Index>> partial;
+  for (const auto& [a, b] : pairs)
+    if (a != num_nodes - 1 && b != num_nodes - 1) partial.emplace_back(a, b);
+  BlockSparseMatrix lacking;
+  lacking.set_pattern(num_nodes, partial);
+  try {
+    energy.bind_pattern(lacking);
+    FAIL() << "a pattern without a tet's blocks was bound";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("lacks a tet block"), std::string::npos) << e.what();
   }
 }
 
