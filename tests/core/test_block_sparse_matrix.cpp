@@ -51,6 +51,39 @@ TEST(BlockSparseMatrix, PatternIsTheSymmetricDeduplicatedPairsPlusTheDiagonal) {
     }
 }
 
+// New contact pairs only add blocks: set_pattern then says where each old block went, so that
+// consumers rebind without searching; a pattern that drops a block says nothing.
+TEST(BlockSparseMatrix, AGrownPatternMapsEveryOldBlockToItsNewPlace) {
+  std::mt19937 rng(5);
+  const Index nodes = 30;
+  std::uniform_int_distribution<Index> node(0, nodes - 1);
+  std::vector<std::pair<Index, Index>> pairs;
+  for (int k = 0; k < 80; ++k) pairs.emplace_back(node(rng), node(rng));
+  BlockSparseMatrix H, other;
+  H.set_pattern(nodes, pairs);
+  EXPECT_TRUE(H.moved_block_index().empty());  // no pattern before the first
+  EXPECT_EQ(H.previous_pattern_version(), 0u);
+  const std::vector<Index> old_offsets = H.row_offsets(), old_columns = H.columns();
+  const auto old_version = H.pattern_version();
+  other.set_pattern(nodes, pairs);
+  EXPECT_NE(other.pattern_version(), old_version);  // no two patterns share a version
+
+  std::vector<std::pair<Index, Index>> grown = pairs;
+  for (int k = 0; k < 40; ++k) grown.emplace_back(node(rng), node(rng));
+  H.set_pattern(nodes, grown);
+  EXPECT_EQ(H.previous_pattern_version(), old_version);
+  ASSERT_EQ(H.moved_block_index().size(), old_columns.size());
+  EXPECT_GT(H.num_blocks(), static_cast<Index>(old_columns.size()));
+  for (Index a = 0; a < nodes; ++a)
+    for (Index k = old_offsets[a]; k < old_offsets[a + 1]; ++k)
+      EXPECT_EQ(H.moved_block_index()[static_cast<std::size_t>(k)], H.find(a, old_columns[k]));
+
+  H.set_pattern(nodes, pairs);  // drops the added blocks
+  EXPECT_TRUE(H.moved_block_index().empty());
+  H.set_pattern(nodes + 1, grown);  // another size
+  EXPECT_TRUE(H.moved_block_index().empty());
+}
+
 TEST(BlockSparseMatrix, NoPairsGiveTheDiagonalOnly) {
   BlockSparseMatrix H;
   H.set_pattern(5, {});

@@ -152,6 +152,34 @@ TEST(ElasticEnergy, BindingFindsEveryTetBlockAndRefusesAPatternWithoutThem) {
               ::testing::ThrowsMessage<Error>(::testing::HasSubstr("lacks a tet block")));
 }
 
+// When the pattern grows (new contact pairs), the tets' blocks are rebound by the matrix's map
+// of moved blocks; the Hessian is the one a fresh binding gives.
+TEST(ElasticEnergy, RebindingAfterTheBlocksMovedGivesTheFreshHessian) {
+  auto p = st::box_problem(4, 3, 3, Vector3(0, 0, 0), Vector3(1, 1, 0.5), st::mooney_rivlin());
+  const Index num_nodes = static_cast<Index>(p.mesh.rest.rows());
+  fem::ElasticEnergy moved(p.mesh.rest, p.mesh.tets, st::tet_materials(p));
+  fem::ElasticEnergy fresh(p.mesh.rest, p.mesh.tets, st::tet_materials(p));
+  std::vector<std::pair<Index, Index>> pairs;
+  moved.hessian_pattern(pairs);
+  BlockSparseMatrix H;
+  H.set_pattern(num_nodes, pairs);
+  moved.bind_pattern(H);
+  for (Index a = 0; a + 7 < num_nodes; a += 5) pairs.emplace_back(a, a + 7);  // like contact pairs
+  H.set_pattern(num_nodes, pairs);
+  ASSERT_FALSE(H.moved_block_index().empty());
+  moved.bind_pattern(H);
+  const Positions x = perturbed(p.mesh.rest, 0.02, 5);
+  moved.add_hessian(x, H);
+  const MatrixX by_map = H.to_dense();
+
+  BlockSparseMatrix G;
+  G.set_pattern(num_nodes, pairs);
+  fresh.bind_pattern(G);
+  fresh.add_hessian(x, G);
+  EXPECT_GT(by_map.norm(), 0.0);
+  EXPECT_EQ(by_map, G.to_dense());
+}
+
 TEST(ElasticEnergy, ProjectedHessianIsPositiveSemiDefinite) {
   auto p = st::box_problem(2, 1, 1, Vector3(0, 0, 0), Vector3(2, 1, 1), st::mooney_rivlin());
   fem::ElasticEnergy energy(p.mesh.rest, p.mesh.tets, st::tet_materials(p), {.project_hessians = true});

@@ -1,6 +1,7 @@
 #include "sinew/core/block_sparse_matrix.hpp"
 
 #include <algorithm>
+#include <atomic>
 
 namespace sinew {
 
@@ -24,6 +25,8 @@ void BlockSparseMatrix::set_pattern(Index num_nodes, std::vector<std::pair<Index
   pairs.clear();
   pairs.shrink_to_fit();
 
+  std::vector<Index> old_offsets = std::move(row_offsets_), old_columns = std::move(columns_);
+  const bool had_pattern = version_ != 0 && num_nodes_ == num_nodes;
   num_nodes_ = num_nodes;
   row_offsets_.assign(rows + 1, 0);
   columns_.clear();
@@ -35,7 +38,28 @@ void BlockSparseMatrix::set_pattern(Index num_nodes, std::vector<std::pair<Index
     row_offsets_[a + 1] = static_cast<Index>(columns_.size());
   }
   values_.assign(columns_.size(), Matrix3::Zero());
-  ++version_;
+
+  // Where the old blocks went: both patterns' rows are sorted, so one merge per row.
+  moved_block_index_.clear();
+  if (had_pattern) {
+    moved_block_index_.resize(old_columns.size());
+    bool kept_all = true;
+    for (Index a = 0; a < num_nodes && kept_all; ++a) {
+      Index k = row_offsets_[a];
+      for (Index old = old_offsets[a]; old < old_offsets[a + 1]; ++old) {
+        while (k < row_offsets_[a + 1] && columns_[k] < old_columns[old]) ++k;
+        if (k == row_offsets_[a + 1] || columns_[k] != old_columns[old]) {
+          kept_all = false;
+          break;
+        }
+        moved_block_index_[old] = k;
+      }
+    }
+    if (!kept_all) moved_block_index_.clear();
+  }
+  static std::atomic<std::uint64_t> patterns_set{0};
+  previous_version_ = version_;
+  version_ = ++patterns_set;
 }
 
 Index BlockSparseMatrix::find(Index a, Index b) const {

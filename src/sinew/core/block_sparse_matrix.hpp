@@ -4,6 +4,7 @@
 /// stored). Its pattern is set once and reused across Newton iterations: energies add values
 /// into existing blocks; a new pattern (e.g. new contact pairs) bumps pattern_version().
 
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -19,8 +20,15 @@ class BlockSparseMatrix {
 
   Index num_nodes() const { return num_nodes_; }
   Index num_blocks() const { return static_cast<Index>(columns_.size()); }
-  /// Incremented by every set_pattern(); consumers cache index maps against it.
+  /// Changed by every set_pattern(), to a number no other matrix's pattern has had; consumers
+  /// cache index maps against it. 0 before the first set_pattern().
   std::uint64_t pattern_version() const { return version_; }
+  /// The pattern_version() before the last set_pattern() (0 if none).
+  std::uint64_t previous_pattern_version() const { return previous_version_; }
+  /// When the last set_pattern() kept every block of the pattern before it (new contact pairs
+  /// only add blocks), the new index of each of those blocks (#blocks before); else empty. A
+  /// consumer bound to previous_pattern_version() can rebind by this map instead of by find().
+  const std::vector<Index>& moved_block_index() const { return moved_block_index_; }
 
   /// Block index of (a, b) or -1 when the pattern has no such block. O(log row length).
   Index find(Index a, Index b) const;
@@ -43,6 +51,8 @@ class BlockSparseMatrix {
  private:
   Index num_nodes_ = 0;
   std::uint64_t version_ = 0;
+  std::uint64_t previous_version_ = 0;
+  std::vector<Index> moved_block_index_;
   std::vector<Index> row_offsets_{0};
   std::vector<Index> columns_;
   std::vector<Matrix3> values_;

@@ -115,6 +115,14 @@ void ElasticEnergy::hessian_pattern(std::vector<std::pair<Index, Index>>& pairs)
 }
 
 void ElasticEnergy::bind_pattern(const BlockSparseMatrix& H) {
+  const std::vector<Index>& moved = H.moved_block_index();
+  if (bound_version_ != 0 && bound_version_ == H.previous_pattern_version() && !moved.empty() &&
+      block_index_.size() == 16 * active_.size()) {
+    // The pattern grew (new contact pairs): every tet block is still there, elsewhere.
+    for (Index& k : block_index_) k = moved[static_cast<std::size_t>(k)];
+    bound_version_ = H.pattern_version();
+    return;
+  }
   block_index_.resize(16 * active_.size());
   for (std::size_t s = 0; s < active_.size(); ++s) {
     const Index t = active_[s];

@@ -30,7 +30,8 @@ class ElasticEnergy final : public Energy {
   bool is_valid(const Positions& x) const override;
 
   /// Caches, for every deformable tet, the block indices of its 16 node pairs in H.
-  /// Must be called after H's pattern is set and before add_hessian().
+  /// Must be called after H's pattern is set and before add_hessian(). When H's pattern grew
+  /// from the one bound last, the indices move by H.moved_block_index() (no search).
   void bind_pattern(const BlockSparseMatrix& H) override;
 
   const std::vector<Index>& deformable_tets() const { return active_; }

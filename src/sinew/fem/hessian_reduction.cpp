@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace sinew::fem {
 namespace {
@@ -20,45 +22,97 @@ NodeDofs node_dofs(const DofMap& dofs, Index a) { return {dofs.num_node_dofs(a),
 HessianReduction::HessianReduction(const DofMap& dofs) : dofs_(dofs) {}
 
 void HessianReduction::bind(const BlockSparseMatrix& H) {
-  const Index num_dofs_ = dofs_.num_dofs();
+  // Every node's unknowns are a contiguous range [first_dof, first_dof + ndof), and two nodes'
+  // ranges are equal (members of one rigid body) or disjoint. So K's pattern is made of whole
+  // ranges: the rows of one range have the same columns, the union of the ranges of the nodes
+  // that any of its nodes has a block with. K is symmetric (H's pattern is), so these rows are
+  // also its columns.
+  const Index num_dofs = dofs_.num_dofs();
   const auto& offsets = H.row_offsets();
   const auto& cols = H.columns();
-  std::vector<Eigen::Triplet<double, int>> entries;
-  entries.reserve(static_cast<std::size_t>(H.num_blocks()) * 9 + static_cast<std::size_t>(num_dofs_));
-  for (Index i = 0; i < num_dofs_; ++i) entries.emplace_back(i, i, 0.0);
+  const auto dof_count = static_cast<std::size_t>(num_dofs);
+
+  // The nodes of each range, by the range's first unknown (a counting sort).
+  std::vector<Index> range_size(dof_count, 0);  // ndof at a range's first unknown, else 0
+  std::vector<Index> member_offset(dof_count + 1, 0);
   for (Index a = 0; a < H.num_nodes(); ++a) {
     const NodeDofs na = node_dofs(dofs_, a);
     if (na.ndof == 0) continue;
-    for (Index k = offsets[a]; k < offsets[a + 1]; ++k) {
-      const NodeDofs nb = node_dofs(dofs_, cols[k]);
-      for (int i = 0; i < na.ndof; ++i)
-        for (int j = 0; j < nb.ndof; ++j) entries.emplace_back(na.dof + i, nb.dof + j, 0.0);
+    range_size[static_cast<std::size_t>(na.dof)] = na.ndof;
+    ++member_offset[static_cast<std::size_t>(na.dof) + 1];
+  }
+  for (std::size_t d = 0; d < dof_count; ++d) member_offset[d + 1] += member_offset[d];
+  std::vector<Index> members(static_cast<std::size_t>(member_offset[dof_count]));
+  {
+    std::vector<Index> next(member_offset.begin(), member_offset.end() - 1);
+    for (Index a = 0; a < H.num_nodes(); ++a) {
+      const NodeDofs na = node_dofs(dofs_, a);
+      if (na.ndof > 0) members[static_cast<std::size_t>(next[static_cast<std::size_t>(na.dof)]++)] = a;
     }
   }
-  pattern_.resize(num_dofs_, num_dofs_);
-  pattern_.setFromTriplets(entries.begin(), entries.end());  // duplicates summed: pattern only
-  pattern_.makeCompressed();
 
+  // Each row's columns: its range's neighbour ranges, sorted, expanded. An unknown that no node
+  // uses (a rigid body without members) keeps its diagonal entry alone.
+  std::vector<int> outer(dof_count + 1, 0);
+  std::vector<int> inner;
+  inner.reserve(static_cast<std::size_t>(H.num_blocks()) * 9 + dof_count);
+  std::vector<Index> seen(dof_count, -1);  // the last range that listed a neighbour range
+  std::vector<std::pair<Index, Index>> neighbours;  // (first unknown, ndof)
+  std::vector<int> row;                             // one row's columns
+  for (Index d = 0; d < num_dofs;) {
+    const auto D = static_cast<std::size_t>(d);
+    const Index ndof = range_size[D] > 0 ? range_size[D] : 1;
+    neighbours.assign(1, {d, ndof});
+    seen[D] = d;
+    for (Index m = member_offset[D]; m < member_offset[D + 1]; ++m) {
+      const Index a = members[static_cast<std::size_t>(m)];
+      for (Index k = offsets[a]; k < offsets[a + 1]; ++k) {
+        const NodeDofs nb = node_dofs(dofs_, cols[k]);
+        if (nb.ndof == 0 || seen[static_cast<std::size_t>(nb.dof)] == d) continue;
+        seen[static_cast<std::size_t>(nb.dof)] = d;
+        neighbours.emplace_back(nb.dof, nb.ndof);
+      }
+    }
+    std::sort(neighbours.begin(), neighbours.end());
+    row.clear();
+    for (const auto& [first, count] : neighbours)
+      for (Index j = 0; j < count; ++j) row.push_back(static_cast<int>(first + j));
+    for (Index i = 0; i < ndof; ++i) {
+      inner.insert(inner.end(), row.begin(), row.end());
+      outer[D + static_cast<std::size_t>(i) + 1] = static_cast<int>(inner.size());
+    }
+    d += ndof;
+  }
+  const std::vector<double> zeros(inner.size(), 0.0);
+  pattern_ = Eigen::Map<const SparseMatrix>(num_dofs, num_dofs, static_cast<Index>(inner.size()), outer.data(),
+                                            inner.data(), zeros.data());
+
+  // Where each block entry goes: the rows of a's range are contiguous in every column of b's
+  // range, at the same place in each, so one search per block finds them all.
+  const int* outer_ptr = pattern_.outerIndexPtr();
+  const int* inner_ptr = pattern_.innerIndexPtr();
   auto value_index = [&](Index row, Index col) -> Index {
-    const int* begin = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col];
-    const int* end = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col + 1];
-    const int* it = std::lower_bound(begin, end, row);
-    return static_cast<Index>(it - pattern_.innerIndexPtr());
+    const int* begin = inner_ptr + outer_ptr[col];
+    const int* end = inner_ptr + outer_ptr[col + 1];
+    return static_cast<Index>(std::lower_bound(begin, end, row) - inner_ptr);
   };
   block_target_offset_.assign(static_cast<std::size_t>(H.num_blocks()) + 1, 0);
   targets_.clear();
+  targets_.reserve(static_cast<std::size_t>(H.num_blocks()) * 9);
   for (Index a = 0; a < H.num_nodes(); ++a) {
     const NodeDofs na = node_dofs(dofs_, a);
     for (Index k = offsets[a]; k < offsets[a + 1]; ++k) {
       const NodeDofs nb = node_dofs(dofs_, cols[k]);
-      if (na.ndof > 0 && nb.ndof > 0)
+      if (na.ndof > 0 && nb.ndof > 0) {
+        const Index within_column = value_index(na.dof, nb.dof) - outer_ptr[nb.dof];
         for (int i = 0; i < na.ndof; ++i)
-          for (int j = 0; j < nb.ndof; ++j) targets_.push_back(value_index(na.dof + i, nb.dof + j));
+          for (int j = 0; j < nb.ndof; ++j) targets_.push_back(outer_ptr[nb.dof + j] + within_column + i);
+      }
       block_target_offset_[k + 1] = static_cast<Index>(targets_.size());
     }
   }
-  diagonal_target_.resize(static_cast<std::size_t>(num_dofs_));
-  for (Index i = 0; i < num_dofs_; ++i) diagonal_target_[i] = value_index(i, i);
+  diagonal_target_.resize(dof_count);
+  for (Index i = 0; i < num_dofs; ++i) diagonal_target_[i] = value_index(i, i);
   bound_version_ = H.pattern_version();
 }
 
