@@ -112,7 +112,7 @@ DynamicEnergies RunOutput::energies(const fem::State& state, const NodalVectors&
   DynamicEnergies e;
   const VectorX v = velocity.reshaped<Eigen::RowMajor>();  // node-major x, y, z
   e.kinetic = 0.5 * v.dot(model_.dynamics->mass->multiply(v));
-  e.elastic = model_.elastic->value(state.x);
+  e.elastic = parallel::sum(model_.elastic->value(state.x));  // on several ranks each holds its tets
   e.gravitational = model_.external->value(state.x);
   if (contact) e.contact = contact->energy;
   return e;
@@ -152,6 +152,7 @@ void RunOutput::add_multiplier_cells(const solver::StepRecord& step, std::vector
 void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State& state,
                           const contact::ContactReport* contact, bool flush) {
   const auto gradient = model_.objective->full_gradient(state);
+  if (parallel::size() > 1) last_elastic_energy_ = parallel::sum(model_.elastic->value(state.x));  // every rank is here
   for (const auto& reaction : fem::compute_reactions(problem_, *model_.dofs, state, gradient)) {
     for (int k = 0; k < 3; ++k) row.emplace_back(reaction.force[k]);
     for (int k = 0; k < 3; ++k) row.emplace_back(reaction.moment[k]);
@@ -205,6 +206,8 @@ void RunOutput::resume(const model::Checkpoint& checkpoint) {
   newton_->restore(rows("newton"));
   if (rigid_) rigid_->restore(rows("rigid_bodies"));
   series_->restore(checkpoint.series);
+  if (parallel::size() > 1)  // every rank resumes
+    last_elastic_energy_ = parallel::sum(model_.elastic->value(checkpoint.snapshot.stepper.state.x));
 }
 
 void RunOutput::flush_tables() const {
@@ -339,7 +342,11 @@ void RunOutput::put_counts(nlohmann::json& j, const solver::StepCounts& counts, 
     // forces dissipated, against the energy stored at the end (their ratio should stay small).
     j["stabilized_steps"] = counts.stabilized_steps;
     j["stabilization_dissipated_energy"] = counts.dissipated;
-    const double stored = counts.stabilized_steps > 0 ? model_.elastic->value(last_state.x) : 0.0;
+    // On several ranks each holds its own tets' energy, and a stopped run may write this on one
+    // rank alone: the sum recorded with the last step's row stands for it (the same state).
+    const double stored = counts.stabilized_steps == 0 ? 0.0
+                          : parallel::size() > 1   ? last_elastic_energy_
+                                                   : model_.elastic->value(last_state.x);
     j["stabilization_energy_ratio"] = stored > 0 ? counts.dissipated / stored : 0.0;
   }
 }

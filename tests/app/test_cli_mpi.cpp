@@ -21,6 +21,8 @@
 #include "mpi_test_support.hpp"
 #include "sinew/contact/contact_energy.hpp"
 #include "sinew/core/error.hpp"
+#include "sinew/fem/elastic_energy.hpp"
+#include "sinew/fem/quadratic_energy.hpp"
 #include "sinew/model/model.hpp"
 #include "sinew/parallel/ranks.hpp"
 #include "sinew/scene/load_scene.hpp"
@@ -274,6 +276,57 @@ TEST(RanksUnderMpirun, EachRankHoldsOnlyItsPartOfTheHessianAndThePartsAddUpToThe
   EXPECT_LE(difference, 1e-12 * largest);
 }
 
+TEST(RanksUnderMpirun, EachRankHoldsTheElasticTermOfItsOwnTetsOnlyAndTheirSumIsTheWhole) {
+  if (parallel::launched_size() <= 1) GTEST_SKIP() << "runs under mpirun (Mpi.TheRankHelpersWorkUnderMpirun)";
+  parallel::start();
+  // ball-drop with stiffness damping, whose K0 needs the elastic stiffness of every tet.
+  nlohmann::json scene = example("ball-drop");
+  scene["dynamics"]["stiffness_damping"] = 0.01;
+  model::Model model = model::build_model(scene::parse_scene(scene, ""));
+  const Tets& tets = model.problem->mesh.tets;
+  // The rank's elastic term holds exactly the deformable tets it owns (docs/mpi.md).
+  std::vector<Index> own;
+  for (Index t = 0; t < tets.rows(); ++t)
+    if (model.tet_material[static_cast<std::size_t>(t)] && model.tet_owner[static_cast<std::size_t>(t)] == parallel::rank())
+      own.push_back(t);
+  EXPECT_EQ(model.elastic->deformable_tets(), own);
+  EXPECT_GT(own.size(), 0u);
+  EXPECT_EQ(model.elastic->rest_shapes().size(), own.size());
+  EXPECT_EQ(model.elastic->materials().size(), own.size());
+  // Summed over the ranks, value and gradient are those of the whole term, here built by the test.
+  const fem::ElasticEnergy whole(model.problem->mesh.rest, tets, model.tet_material);
+  Positions x = model.problem->mesh.rest;
+  for (Index i = 0; i < x.rows(); ++i)  // the same smooth deformation on every rank
+    x.row(i) += 0.002 * Vector3(std::sin(40 * x(i, 2)), std::cos(30 * x(i, 0)), std::sin(50 * x(i, 1))).transpose();
+  const double whole_value = whole.value(x);
+  EXPECT_GT(whole_value, 0);
+  EXPECT_NEAR(parallel::sum(model.elastic->value(x)), whole_value, 1e-12 * whole_value);
+  NodalVectors part_gradient = NodalVectors::Zero(x.rows(), 3), whole_gradient = NodalVectors::Zero(x.rows(), 3);
+  model.elastic->add_gradient(x, part_gradient);
+  whole.add_gradient(x, whole_gradient);
+  parallel::sum(part_gradient.data(), static_cast<std::size_t>(part_gradient.size()));
+  EXPECT_LE((part_gradient - whole_gradient).cwiseAbs().maxCoeff(), 1e-12 * whole_gradient.cwiseAbs().maxCoeff());
+  // The damping matrix D = a M + b K0 of every rank holds the whole K0: the ranks' parts summed.
+  ASSERT_TRUE(model.dynamics && model.dynamics->viscosity);
+  std::vector<std::pair<Index, Index>> pairs;
+  whole.hessian_pattern(pairs);
+  BlockSparseMatrix K0;
+  K0.set_pattern(x.rows(), std::move(pairs));
+  fem::ElasticEnergy whole_bound(model.problem->mesh.rest, tets, model.tet_material);
+  whole_bound.bind_pattern(K0);
+  whole_bound.add_hessian(model.problem->mesh.rest, K0);
+  const BlockSparseMatrix expected = fem::linear_combination(10.0, *model.dynamics->mass, 0.01, K0);
+  const BlockSparseMatrix& D = model.dynamics->viscosity->matrix();
+  ASSERT_EQ(D.num_blocks(), expected.num_blocks());
+  double largest = 0, difference = 0;
+  for (Index k = 0; k < D.num_blocks(); ++k) {
+    largest = std::max(largest, expected.values()[static_cast<std::size_t>(k)].cwiseAbs().maxCoeff());
+    difference = std::max(difference, (D.values()[static_cast<std::size_t>(k)] - expected.values()[static_cast<std::size_t>(k)]).cwiseAbs().maxCoeff());
+  }
+  EXPECT_GT(largest, 0);
+  EXPECT_LE(difference, 1e-12 * largest);
+}
+
 TEST(RanksUnderMpirun, GatherAllConcatenatesEveryRanksBytesInRankOrder) {
   if (parallel::launched_size() <= 1) GTEST_SKIP() << "runs under mpirun (Mpi.TheRankHelpersWorkUnderMpirun)";
   parallel::start();
@@ -291,10 +344,11 @@ TEST(RanksUnderMpirun, EachRankDetectsThePairsOfItsTetsAndEveryRankEndsWithAllOf
   model::Model model = model::build_model(scene::parse_scene(example("hertz-ball"), ""));
   // The ball's nodes (those of the deformable tets) lowered 0.3 mm into the rigid block.
   fem::State state = model.dofs->initial_state(0.0);
-  const Tets& tets = model.elastic->tets();
+  const Tets& tets = model.problem->mesh.tets;
   std::vector<char> in_ball(static_cast<std::size_t>(state.x.rows()), 0);
-  for (const Index e : model.elastic->deformable_tets())
-    for (int k = 0; k < 4; ++k) in_ball[static_cast<std::size_t>(tets(e, k))] = 1;
+  for (Index e = 0; e < tets.rows(); ++e)
+    if (model.tet_material[static_cast<std::size_t>(e)])
+      for (int k = 0; k < 4; ++k) in_ball[static_cast<std::size_t>(tets(e, k))] = 1;
   for (Index i = 0; i < state.x.rows(); ++i)
     if (in_ball[static_cast<std::size_t>(i)]) state.x(i, 2) -= 0.3;
   model.objective->full_gradient(state);  // updates the contact pairs at state.x on every rank
@@ -327,10 +381,10 @@ TEST_F(Mpi, TheRankHelpersWorkUnderMpirun) {
   const CommandResult result = run_program(fs::read_symlink("/proc/self/exe").string(), {"--gtest_filter=RanksUnderMpirun.*", "--gtest_color=no"}, directory,
                                            with_timeout(mpirun(2)));
   EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
-  // Each of the 2 ranks ran the five tests and none skipped.
+  // Each of the 2 ranks ran the six tests and none skipped.
   std::size_t passed = 0;
-  for (std::size_t at = result.out.find("[  PASSED  ] 5 tests"); at != std::string::npos;
-       at = result.out.find("[  PASSED  ] 5 tests", at + 1))
+  for (std::size_t at = result.out.find("[  PASSED  ] 6 tests"); at != std::string::npos;
+       at = result.out.find("[  PASSED  ] 6 tests", at + 1))
     ++passed;
   EXPECT_EQ(passed, 2u) << result.out;
   EXPECT_EQ(result.out.find("SKIPPED"), std::string::npos) << result.out;

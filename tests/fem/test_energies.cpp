@@ -180,6 +180,67 @@ TEST(ElasticEnergy, RebindingAfterTheBlocksMovedGivesTheFreshHessian) {
   EXPECT_EQ(by_map, G.to_dense());
 }
 
+// Shares of the tets (MPI ranks, docs/mpi.md): each keeps only the laws and rest shapes of the
+// tets it evaluates; two complementary shares add up to the whole term, and each lists the whole
+// term's pattern for a Hessian summed over the ranks.
+TEST(ElasticEnergy, ComplementarySharesAddUpToTheWholeTerm) {
+  auto p = st::box_problem(4, 3, 2, Vector3(0, 0, 0), Vector3(1, 1, 0.5), st::mooney_rivlin());
+  std::vector<material::MaterialPtr> materials = st::tet_materials(p);
+  for (std::size_t t = 0; t < materials.size(); t += 5) materials[t] = nullptr;  // some rigid tets
+  const auto num_tets = static_cast<std::size_t>(p.mesh.tets.rows());
+  const Index num_nodes = static_cast<Index>(p.mesh.rest.rows());
+  std::vector<bool> first_half(num_tets), second_half(num_tets);
+  for (std::size_t t = 0; t < num_tets; ++t) (t < num_tets / 2 ? first_half : second_half)[t] = true;
+  const fem::ElasticEnergy whole(p.mesh.rest, p.mesh.tets, materials);
+  fem::ElasticEnergy a(p.mesh.rest, p.mesh.tets, materials, {.evaluated_tets = first_half});
+  fem::ElasticEnergy b(p.mesh.rest, p.mesh.tets, materials, {.evaluated_tets = second_half});
+  ASSERT_GT(a.deformable_tets().size(), 0u);
+  ASSERT_GT(b.deformable_tets().size(), 0u);
+  EXPECT_EQ(a.deformable_tets().size() + b.deformable_tets().size(), whole.deformable_tets().size());
+  EXPECT_EQ(a.rest_shapes().size(), a.deformable_tets().size());
+  EXPECT_EQ(a.materials().size(), a.deformable_tets().size());
+  for (const Index t : a.deformable_tets()) EXPECT_TRUE(first_half[static_cast<std::size_t>(t)] && materials[static_cast<std::size_t>(t)]);
+
+  const Positions x = perturbed(p.mesh.rest, 0.03, 7);
+  EXPECT_NEAR(a.value(x) + b.value(x), whole.value(x), 1e-12 * whole.value(x));
+  NodalVectors ga = NodalVectors::Zero(num_nodes, 3), gb = ga, gw = ga;
+  a.add_gradient(x, ga);
+  b.add_gradient(x, gb);
+  whole.add_gradient(x, gw);
+  EXPECT_LE((ga + gb - gw).cwiseAbs().maxCoeff(), 1e-12 * gw.cwiseAbs().maxCoeff());
+
+  // Each share's own pattern is part of the whole; its whole pattern is the whole term's.
+  std::vector<std::pair<Index, Index>> whole_pairs, own_pairs, listed_whole;
+  whole.hessian_pattern(whole_pairs);
+  a.hessian_pattern(own_pairs);
+  a.whole_hessian_pattern(listed_whole);
+  EXPECT_LT(own_pairs.size(), whole_pairs.size());
+  EXPECT_EQ(listed_whole, whole_pairs);
+  BlockSparseMatrix H, W;
+  H.set_pattern(num_nodes, whole_pairs);
+  W.set_pattern(num_nodes, whole_pairs);
+  a.bind_pattern(H);
+  b.bind_pattern(H);
+  a.add_hessian(x, H);
+  b.add_hessian(x, H);
+  fem::ElasticEnergy whole_bound(p.mesh.rest, p.mesh.tets, materials);
+  whole_bound.bind_pattern(W);
+  whole_bound.add_hessian(x, W);
+  const MatrixX sum = H.to_dense(), expected = W.to_dense();
+  EXPECT_GT(expected.norm(), 0.0);
+  EXPECT_LE((sum - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+
+  // The measures of a share: its own tets, J = 1 and no stress elsewhere.
+  const fem::TetMeasures m = fem::compute_tet_measures(x, a), mw = fem::compute_tet_measures(x, whole);
+  for (std::size_t t = 0; t < num_tets; ++t) {
+    const bool own = first_half[t] && materials[t];
+    EXPECT_EQ(m.J[static_cast<Index>(t)], own ? mw.J[static_cast<Index>(t)] : 1.0) << t;
+    EXPECT_EQ(m.von_mises[static_cast<Index>(t)], own ? mw.von_mises[static_cast<Index>(t)] : 0.0) << t;
+  }
+  EXPECT_THAT([&] { fem::ElasticEnergy(p.mesh.rest, p.mesh.tets, materials, {.evaluated_tets = {true, false}}); },
+              ::testing::ThrowsMessage<Error>(::testing::HasSubstr("one evaluated-tet flag per tet")));
+}
+
 TEST(ElasticEnergy, ProjectedHessianIsPositiveSemiDefinite) {
   auto p = st::box_problem(2, 1, 1, Vector3(0, 0, 0), Vector3(2, 1, 1), st::mooney_rivlin());
   fem::ElasticEnergy energy(p.mesh.rest, p.mesh.tets, st::tet_materials(p), {.project_hessians = true});

@@ -30,6 +30,10 @@ class Energy {
   virtual void add_hessian(const Positions& x, BlockSparseMatrix& H) const = 0;
   /// Node pairs (a, b) whose 3x3 block this term may fill (one orientation suffices).
   virtual void hessian_pattern(std::vector<std::pair<Index, Index>>& pairs) const = 0;
+  /// On several MPI ranks, for a term that holds one rank's share of itself (docs/mpi.md): the
+  /// pattern of the whole term, the same on every rank, which a Hessian summed over the ranks
+  /// lies on. By default hessian_pattern().
+  virtual void whole_hessian_pattern(std::vector<std::pair<Index, Index>>& pairs) const { hessian_pattern(pairs); }
   /// Called after the Hessian's pattern was (re)built, before add_hessian(): terms may cache
   /// block indices here.
   virtual void bind_pattern(const BlockSparseMatrix& /*H*/) {}

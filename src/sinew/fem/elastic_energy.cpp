@@ -29,20 +29,32 @@ Vector12 tet_gradient(const Matrix3& P, const TetRestShape& rest) {
 
 ElasticEnergy::ElasticEnergy(const Positions& rest, const Tets& tets,
                              std::vector<material::MaterialPtr> tet_material, ElasticEnergyOptions options)
-    : tets_(tets), material_(std::move(tet_material)), options_(options) {
-  if (material_.size() != static_cast<std::size_t>(tets.rows()))
+    : tets_(tets), options_(std::move(options)) {
+  if (tet_material.size() != static_cast<std::size_t>(tets.rows()))
     throw Error("ElasticEnergy: one material per tet expected");
   // Every tet's shape is checked (a degenerate one throws), and the deformable tets' are kept:
   // a rank's share keeps its own only (docs/mpi.md).
   const std::vector<TetRestShape> every_rest_shape = compute_rest_shapes(rest, tets);
   num_nodes_ = static_cast<Index>(rest.rows());
-  const auto deformable = static_cast<std::size_t>(std::count_if(material_.begin(), material_.end(), [](const auto& m) { return m != nullptr; }));
-  active_.reserve(deformable);
-  rest_.reserve(deformable);
+  const std::vector<bool>& evaluated = options_.evaluated_tets;
+  if (!evaluated.empty()) {
+    if (evaluated.size() != tet_material.size()) throw Error("ElasticEnergy: one evaluated-tet flag per tet expected");
+    deformable_.resize(tet_material.size());
+    for (std::size_t t = 0; t < tet_material.size(); ++t) deformable_[t] = tet_material[t] != nullptr;
+  }
+  const auto evaluates = [&](Index t) {
+    return tet_material[static_cast<std::size_t>(t)] && (evaluated.empty() || evaluated[static_cast<std::size_t>(t)]);
+  };
+  Index count = 0;
+  for (Index t = 0; t < tets.rows(); ++t) count += evaluates(t) ? 1 : 0;
+  active_.reserve(static_cast<std::size_t>(count));
+  rest_.reserve(static_cast<std::size_t>(count));
+  material_.reserve(static_cast<std::size_t>(count));
   for (Index t = 0; t < tets.rows(); ++t)
-    if (material_[t]) {
+    if (evaluates(t)) {
       active_.push_back(t);
       rest_.push_back(every_rest_shape[static_cast<std::size_t>(t)]);
+      material_.push_back(std::move(tet_material[static_cast<std::size_t>(t)]));
     }
 
   incidence_offsets_.assign(static_cast<std::size_t>(num_nodes_) + 1, 0);
@@ -62,7 +74,7 @@ double ElasticEnergy::value(const Positions& x) const {
         for (std::size_t s = r.begin(); s < r.end(); ++s) {
           const Index t = active_[s];
           const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[s].Dm_inv);
-          sum += rest_[s].volume * material_[t]->evaluate(F, nullptr, nullptr);
+          sum += rest_[s].volume * material_[s]->evaluate(F, nullptr, nullptr);
         }
         return sum;
       },
@@ -91,7 +103,7 @@ void ElasticEnergy::add_gradient(const Positions& x, NodalVectors& grad) const {
       const Index t = active_[s];
       const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[s].Dm_inv);
       Matrix3 P;
-      material_[t]->evaluate(F, &P, nullptr);
+      material_[s]->evaluate(F, &P, nullptr);
       local[s] = tet_gradient(P, rest_[s]);
     }
   });
@@ -112,6 +124,14 @@ void ElasticEnergy::hessian_pattern(std::vector<std::pair<Index, Index>>& pairs)
   for (Index t : active_)
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) pairs.emplace_back(tets_(t, i), tets_(t, j));
+}
+
+void ElasticEnergy::whole_hessian_pattern(std::vector<std::pair<Index, Index>>& pairs) const {
+  if (deformable_.empty()) return hessian_pattern(pairs);
+  for (Index t = 0; t < tets_.rows(); ++t)
+    if (deformable_[static_cast<std::size_t>(t)])
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) pairs.emplace_back(tets_(t, i), tets_(t, j));
 }
 
 void ElasticEnergy::bind_pattern(const BlockSparseMatrix& H) {
@@ -146,7 +166,7 @@ void ElasticEnergy::add_hessian(const Positions& x, BlockSparseMatrix& H) const 
       const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[s].Dm_inv);
       Matrix3 P;
       Matrix9 dPdF;
-      material_[t]->evaluate(F, &P, &dPdF);
+      material_[s]->evaluate(F, &P, &dPdF);
       if (options_.project_hessians) dPdF = project_to_psd(dPdF);
       const Eigen::Matrix<double, 9, 12> B = deformation_gradient_jacobian(rest_[s].Dm_inv);
       // Coefficient-wise products: for 12 x 9 x 12 Eigen's general product would pack and block.
@@ -186,7 +206,7 @@ TetMeasures compute_tet_measures(const Positions& x, const ElasticEnergy& elasti
       return;
     }
     Matrix3 P;
-    elastic.tet_materials()[static_cast<std::size_t>(t)]->evaluate(F, &P, nullptr);
+    elastic.materials()[s]->evaluate(F, &P, nullptr);
     const Matrix3 sigma = P * F.transpose() / J;
     const Matrix3 dev = sigma - sigma.trace() / 3.0 * Matrix3::Identity();
     m.von_mises[t] = std::sqrt(1.5 * dev.squaredNorm());

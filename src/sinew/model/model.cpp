@@ -72,13 +72,15 @@ Dynamics make_dynamics(const scene::DynamicsConfig& config, const fem::Problem& 
       fem::block_mass_matrix(fem::mass_matrix(mesh.rest, mesh.tets, mesh.region, problem.region_density, kind)));
   if (integrator != Integrator::Quasistatic) d.inertia = std::make_unique<fem::QuadraticEnergy>("inertia", *d.mass);
   if (config.mass_damping > 0 || config.stiffness_damping > 0) {
-    // K0: the elastic stiffness at rest.
+    // K0: the elastic stiffness at rest. On several ranks `elastic` evaluates this rank's tets
+    // only: their parts, on the whole pattern, are summed, so every rank has all of K0.
     std::vector<std::pair<Index, Index>> pairs;
-    elastic.hessian_pattern(pairs);
+    elastic.whole_hessian_pattern(pairs);
     BlockSparseMatrix K0;
     K0.set_pattern(mesh.num_nodes(), std::move(pairs));
     elastic.bind_pattern(K0);
     elastic.add_hessian(mesh.rest, K0);
+    if (parallel::size() > 1 && !K0.values().empty()) parallel::sum(K0.values().front().data(), 9 * K0.values().size());
     d.viscosity = std::make_unique<fem::QuadraticEnergy>(
         "viscosity", fem::linear_combination(config.mass_damping, *d.mass, config.stiffness_damping, K0));
   }
@@ -155,26 +157,19 @@ void rebuild_objective(Model& model) {
     // Several ranks (docs/mpi.md): each evaluates the tets it owns and the contact pairs whose tet
     // it owns (the contact geometry's tets are the mesh's); the other terms are rank 0's.
     if (model.contact) model.contact->set_share(model.tet_owner, parallel::rank(), rank_pair_join(*model.contact));
-    std::vector<Energy*> shares(terms.size(), nullptr);
-    for (std::size_t i = 0; i < terms.size(); ++i) {
-      if (terms[i] == model.elastic.get()) shares[i] = model.elastic_share.get();
-      if (model.contact && terms[i] == model.contact.get()) shares[i] = model.contact.get();  // its own share
-    }
-    model.objective->share_terms(std::move(shares));
+    std::vector<bool> shared(terms.size(), false);
+    for (std::size_t i = 0; i < terms.size(); ++i)
+      shared[i] = terms[i] == model.elastic.get() || (model.contact && terms[i] == model.contact.get());
+    model.objective->share_terms(std::move(shared));
   }
 }
 
-/// On several ranks: this rank's share of the elastic energy, the deformable tets `tet_owner`
-/// gives it (docs/mpi.md); null on one rank.
-std::unique_ptr<fem::ElasticEnergy> make_elastic_share(const mesh::TetMesh& mesh,
-                                                       const std::vector<material::MaterialPtr>& tet_material,
-                                                       const std::vector<int>& tet_owner,
-                                                       const fem::ElasticEnergyOptions& options) {
-  if (parallel::size() <= 1) return nullptr;
-  std::vector<material::MaterialPtr> share(tet_material.size());
-  for (std::size_t t = 0; t < tet_material.size(); ++t)
-    if (tet_owner[t] == parallel::rank()) share[t] = tet_material[t];
-  return std::make_unique<fem::ElasticEnergy>(mesh.rest, mesh.tets, std::move(share), options);
+/// On several ranks, the tets this rank evaluates: those Model::tet_owner gives it (docs/mpi.md);
+/// empty (every tet) on one rank.
+std::vector<bool> own_tets(const Model& model) {
+  std::vector<bool> own(model.tet_owner.size());
+  for (std::size_t t = 0; t < own.size(); ++t) own[t] = model.tet_owner[t] == parallel::rank();
+  return own;
 }
 
 /// On several ranks: the rank that owns each tet (parallel::partition_tets, compact parts of
@@ -301,10 +296,11 @@ Model build_model(const scene::SceneConfig& scene) {
   for (Index t = 0; t < mesh.num_tets(); ++t) model.tet_material[t] = problem.region_material[mesh.region[t]];
   for (const auto& [t, law] : problem.element_material) model.tet_material[static_cast<std::size_t>(t)] = law;
   model.dofs = std::make_unique<fem::DofMap>(problem);
-  const fem::ElasticEnergyOptions elastic_options{.project_hessians = scene.solver.newton.project_element_hessians};
-  model.elastic = std::make_unique<fem::ElasticEnergy>(mesh.rest, mesh.tets, model.tet_material, elastic_options);
   model.tet_owner = partition_among_ranks(mesh, model.tet_material);
-  model.elastic_share = make_elastic_share(mesh, model.tet_material, model.tet_owner, elastic_options);
+  model.elastic = std::make_unique<fem::ElasticEnergy>(
+      mesh.rest, mesh.tets, model.tet_material,
+      fem::ElasticEnergyOptions{.project_hessians = scene.solver.newton.project_element_hessians,
+                                .evaluated_tets = own_tets(model)});
   const bool dynamic = scene.dynamics.enabled;
   // Dynamics: gravity and loads act in full from t = 0.
   model.external = std::make_unique<fem::ExternalForceEnergy>(

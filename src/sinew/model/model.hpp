@@ -43,15 +43,13 @@ struct Model {
   std::unique_ptr<const fem::Problem> problem;
   std::unique_ptr<fem::DofMap> dofs;
   std::vector<material::MaterialPtr> tet_material;  ///< #T, nullptr for rigid tets
-  std::unique_ptr<fem::ElasticEnergy> elastic;
   /// On several MPI ranks: the rank that owns each tet (#T; compact parts of the mesh, docs/mpi.md
   /// "Who owns what"), which evaluates its element and contact work and writes it out; empty on
   /// one rank.
   std::vector<int> tet_owner;
-  /// On several MPI ranks: this rank's share of `elastic` (the tets it owns), which the
-  /// objective evaluates instead (docs/mpi.md); null on one rank. `elastic` stays whole for
-  /// the outputs.
-  std::unique_ptr<fem::ElasticEnergy> elastic_share;
+  /// The elastic energy of the deformable tets; on several MPI ranks, of the deformable tets this
+  /// rank owns only (its share, docs/mpi.md): its value is then this rank's part of the sum.
+  std::unique_ptr<fem::ElasticEnergy> elastic;
   std::unique_ptr<fem::ExternalForceEnergy> external;
   /// The scene's contact input (depths, penalties, body names), kept so that set_contact
   /// changes the method and penalties without re-meshing or recomputing the depth; none

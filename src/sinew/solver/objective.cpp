@@ -13,29 +13,19 @@ namespace sinew::solver {
 Objective::Objective(const fem::DofMap& dofs, std::vector<Energy*> terms, Index num_nodes)
     : dofs_(dofs), reduction_(dofs), terms_(std::move(terms)), num_nodes_(num_nodes) {}
 
-void Objective::share_terms(std::vector<Energy*> shares) {
-  if (shares.size() != terms_.size())
-    throw Error("Objective::share_terms: one share (or null) per term is needed");
-  shares_ = std::move(shares);
-  pattern_ready_ = false;  // the shares bind to the pattern too
-}
-
-std::vector<Energy*> Objective::separate_shares() const {
-  std::vector<Energy*> separate;
-  for (std::size_t i = 0; i < shares_.size(); ++i)
-    if (shares_[i] && shares_[i] != terms_[i]) separate.push_back(shares_[i]);
-  return separate;
+void Objective::share_terms(std::vector<bool> shared) {
+  if (shared.size() != terms_.size()) throw Error("Objective::share_terms: one flag per term is needed");
+  shared_ = std::move(shared);
+  pattern_ready_ = false;  // the pattern is each rank's own or the whole
 }
 
 Energy* Objective::evaluated(std::size_t i) const {
-  if (shares_.empty()) return terms_[i];
-  if (shares_[i]) return shares_[i];
+  if (shared_.empty() || shared_[i]) return terms_[i];
   return parallel::is_root() ? terms_[i] : nullptr;
 }
 
 void Objective::set_load_parameter(double lambda) {
   for (auto* term : terms_) term->set_load_parameter(lambda);
-  for (auto* share : separate_shares()) share->set_load_parameter(lambda);
 }
 
 namespace {
@@ -50,20 +40,17 @@ void Objective::update_terms(const fem::State& state) {
   if (!state.x.allFinite()) return;
   const auto start = std::chrono::steady_clock::now();
   for (auto* term : terms_) term->update(state.x);
-  for (auto* share : separate_shares()) share->update(state.x);
   collision_seconds_ += seconds_since(start);
 }
 
 void Objective::set_time_step(double h) {
   for (auto* term : terms_) term->set_time_step(h);
-  for (auto* share : separate_shares()) share->set_time_step(h);
 }
 
 void Objective::begin_step(const fem::State& state) {
   if (!state.x.allFinite()) return;
   const auto start = std::chrono::steady_clock::now();
   for (auto* term : terms_) term->begin_step(state.x);
-  for (auto* share : separate_shares()) share->begin_step(state.x);
   collision_seconds_ += seconds_since(start);
 }
 
@@ -77,12 +64,9 @@ bool Objective::is_valid(const fem::State& state) {
   if (!state.x.allFinite()) return false;  // the same on every rank: x is
   update_terms(state);
   bool valid = true;
-  for (std::size_t i = 0; i < terms_.size() && valid; ++i) {
-    // A shared term is checked by its shares (each rank its own elements); the others everywhere.
-    Energy* term = shares_.empty() || !shares_[i] ? terms_[i] : shares_[i];
-    valid = term->is_valid(state.x);
-  }
-  return shares_.empty() ? valid : parallel::all(valid);
+  // A shared term is checked by each rank for its own elements; the others everywhere.
+  for (std::size_t i = 0; i < terms_.size() && valid; ++i) valid = terms_[i]->is_valid(state.x);
+  return shared_.empty() ? valid : parallel::all(valid);
 }
 
 double Objective::value(const fem::State& state) {
@@ -90,7 +74,7 @@ double Objective::value(const fem::State& state) {
   double sum = 0;
   for (std::size_t i = 0; i < terms_.size(); ++i)
     if (Energy* term = evaluated(i)) sum += term->value(state.x);
-  if (!shares_.empty()) sum = parallel::sum(sum);  // a NaN on any rank stays NaN
+  if (!shared_.empty()) sum = parallel::sum(sum);  // a NaN on any rank stays NaN
   return std::isnan(sum) ? std::numeric_limits<double>::infinity() : sum;
 }
 
@@ -100,7 +84,7 @@ NodalVectors Objective::full_gradient(const fem::State& state, double* force_sca
   if (!force_scale) {
     for (std::size_t i = 0; i < terms_.size(); ++i)
       if (Energy* term = evaluated(i)) term->add_gradient(state.x, g);
-    if (!shares_.empty()) parallel::sum(g.data(), static_cast<std::size_t>(g.size()));
+    if (!shared_.empty()) parallel::sum(g.data(), static_cast<std::size_t>(g.size()));
     return g;
   }
   *force_scale = 0;
@@ -109,7 +93,7 @@ NodalVectors Objective::full_gradient(const fem::State& state, double* force_sca
     term_gradient.setZero();
     if (Energy* term = evaluated(i)) term->add_gradient(state.x, term_gradient);
     // Each term's norm is that of its whole gradient, summed over the ranks.
-    if (!shares_.empty()) parallel::sum(term_gradient.data(), static_cast<std::size_t>(term_gradient.size()));
+    if (!shared_.empty()) parallel::sum(term_gradient.data(), static_cast<std::size_t>(term_gradient.size()));
     *force_scale = std::max(*force_scale, term_gradient.norm());
     g += term_gradient;
   }
@@ -132,10 +116,9 @@ void Objective::rebuild_pattern() {
     for (std::size_t i = 0; i < terms_.size(); ++i)
       if (Energy* term = evaluated(i)) term->bind_pattern(H_);
   } else {
-    for (auto* term : terms_) term->hessian_pattern(pairs);
+    for (auto* term : terms_) term->whole_hessian_pattern(pairs);  // the same on every rank
     H_.set_pattern(num_nodes_, std::move(pairs));
     for (auto* term : terms_) term->bind_pattern(H_);
-    for (auto* share : separate_shares()) share->bind_pattern(H_);
   }
   reduction_.bind(H_);
   pattern_ready_ = true;
@@ -161,8 +144,8 @@ bool Objective::hessian(const fem::State& state, const NodalVectors& full_gradie
   // it) and reduces it to the same K; or, with set_hessian_summed(false), its part (on its own
   // pattern), where the reduction's terms that do not come from H (viscosity, rigid-body
   // rotation) are rank 0's.
-  const bool whole = shares_.empty() || hessian_summed_;
-  if (!shares_.empty() && hessian_summed_)
+  const bool whole = shared_.empty() || hessian_summed_;
+  if (!shared_.empty() && hessian_summed_)
     parallel::sum(H_.values().empty() ? nullptr : H_.values().front().data(), 9 * H_.values().size());
   if (whole || parallel::is_root())
     reduction_.reduce(state, H_, full_gradient, node_viscosity, K);

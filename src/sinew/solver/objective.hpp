@@ -41,16 +41,15 @@ class Objective {
   /// detection), accumulated over the objective's life.
   double collision_seconds() const { return collision_seconds_; }
 
-  /// A run on several ranks (parallel::size() > 1, docs/mpi.md): `shares` has one entry per term
-  /// (in the order given to the constructor), this rank's share of that term (the sum of the
-  /// ranks' shares is the term, such as the elastic energy of a part of the tets; a term may be
-  /// its own share, set to evaluate a part of itself, as the contact pairs) or null. This
-  /// rank then evaluates the shares instead of their terms and the other terms only on rank 0;
-  /// value, gradient and Hessian are summed over the ranks, and a state is valid when it is on
-  /// every rank, so every rank gets the same results. The terms still give the Hessian's pattern.
-  /// Every rank must then call the objective's functions in the same order (they communicate).
-  /// The shares are not owned.
-  void share_terms(std::vector<Energy*> shares);
+  /// A run on several ranks (parallel::size() > 1, docs/mpi.md): `shared` has one flag per term
+  /// (in the order given to the constructor). A shared term holds this rank's share of itself
+  /// (the sum of the ranks' shares is the term: the elastic energy of the tets this rank owns,
+  /// the contact pairs of those tets) and is evaluated on every rank; the other terms only on
+  /// rank 0. Value, gradient and Hessian are summed over the ranks, and a state is valid when it
+  /// is on every rank, so every rank gets the same results. A summed Hessian lies on the terms'
+  /// whole patterns (Energy::whole_hessian_pattern, the same on every rank). Every rank must then
+  /// call the objective's functions in the same order (they communicate).
+  void share_terms(std::vector<bool> shared);
   /// On several ranks, whether hessian() sums the full-space Hessian over the ranks (true, the
   /// default: every rank gets the whole K). False leaves each rank's K its own part: its terms'
   /// Hessians reduced to the unknowns, with the reduction's quasi-viscosity and rigid-body terms
@@ -65,18 +64,15 @@ class Objective {
   void rebuild_pattern();
   void update_terms(const fem::State& state);
   std::uint64_t pattern_revisions() const;
-  /// What this rank evaluates for term i: its share, the term, or null (not on this rank).
+  /// The term i if this rank evaluates it (a shared term, or any on rank 0), else null.
   Energy* evaluated(std::size_t i) const;
-  /// The shares that are objects of their own (a term may be its own share, set to evaluate
-  /// part of itself), which need the terms' calls (update, begin_step, ...) too.
-  std::vector<Energy*> separate_shares() const;
   /// On several ranks, each rank holds and assembles only its part of the Hessian.
-  bool assembles_parts() const { return !shares_.empty() && !hessian_summed_; }
+  bool assembles_parts() const { return !shared_.empty() && !hessian_summed_; }
   std::uint64_t pattern_revision_ = 0;
   const fem::DofMap& dofs_;
   fem::HessianReduction reduction_;  ///< q-space pattern of H_
   std::vector<Energy*> terms_;
-  std::vector<Energy*> shares_;  ///< per term, this rank's share or null (empty: one rank)
+  std::vector<bool> shared_;  ///< per term, whether it holds this rank's share (empty: one rank)
   Index num_nodes_;
   BlockSparseMatrix H_;
   bool pattern_ready_ = false;
