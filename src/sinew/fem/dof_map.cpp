@@ -89,7 +89,11 @@ DofMap::DofMap(const Problem& problem) : problem_(problem) {
                                      set.name, a, problem.rigid_bodies[node.owner].name));
       if (node.kind == NodeKind::Prescribed) continue;  // fully prescribed wins
       node.kind = NodeKind::Planar;
-      node.planes.push_back(static_cast<Index>(p));
+      if (node.planar < 0) {
+        node.planar = static_cast<Index>(planar_.size());
+        planar_.emplace_back();
+      }
+      planar_[static_cast<std::size_t>(node.planar)].planes.push_back(static_cast<Index>(p));
     }
   }
 
@@ -97,9 +101,10 @@ DofMap::DofMap(const Problem& problem) : problem_(problem) {
   for (Index a = 0; a < n; ++a) {
     NodeInfo& node = node_[a];
     if (node.kind != NodeKind::Planar) continue;
-    const int k = static_cast<int>(node.planes.size());
+    PlanarInfo& held = planar_[static_cast<std::size_t>(node.planar)];
+    const int k = static_cast<int>(held.planes.size());
     Eigen::Matrix<double, Eigen::Dynamic, 3> N(k, 3);
-    for (int i = 0; i < k; ++i) N.row(i) = problem.planar[node.planes[i]].normal.normalized().transpose();
+    for (int i = 0; i < k; ++i) N.row(i) = problem.planar[held.planes[i]].normal.normalized().transpose();
     Eigen::JacobiSVD<Eigen::Matrix<double, Eigen::Dynamic, 3>> svd(N, Eigen::ComputeFullV);
     const auto& sv = svd.singularValues();
     int rank = 0;
@@ -108,11 +113,11 @@ DofMap::DofMap(const Problem& problem) : problem_(problem) {
     if (rank < k)
       throw InputError(fmt::format("node {} is held by parallel planar constraints (\"{}\" and others); use one "
                                    "planar constraint per direction",
-                                   a, problem.planar[node.planes[0]].name));
+                                   a, problem.planar[held.planes[0]].name));
     node.ndof = 3 - rank;
     const Matrix3 V = svd.matrixV();
-    node.basis.setZero();
-    for (int j = 0; j < node.ndof; ++j) node.basis.col(j) = V.col(rank + j);
+    held.basis.setZero();
+    for (int j = 0; j < node.ndof; ++j) held.basis.col(j) = V.col(rank + j);
     if (node.ndof == 0) node.kind = NodeKind::Prescribed, node.owner = -1;
   }
 
@@ -137,6 +142,11 @@ DofMap::DofMap(const Problem& problem) : problem_(problem) {
   num_dofs_ = next;
 }
 
+const Matrix3& DofMap::basis(const NodeInfo& node) const {
+  static const Matrix3 identity = Matrix3::Identity();
+  return node.planar < 0 ? identity : planar_[static_cast<std::size_t>(node.planar)].basis;
+}
+
 Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6> DofMap::node_jacobian(const State& state, Index a) const {
   const NodeInfo& node = node_[a];
   Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6> J(3, node.ndof);
@@ -147,7 +157,8 @@ Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 6> DofMap::node_jacobian(const St
     J.leftCols<3>().setIdentity();
     J.rightCols<3>() = -cross_matrix(arm);  // d(w x arm)/dw = -[arm]x
   } else {
-    for (int j = 0; j < node.ndof; ++j) J.col(j) = node.basis.col(j);
+    const Matrix3& allowed = basis(node);
+    for (int j = 0; j < node.ndof; ++j) J.col(j) = allowed.col(j);
   }
   return J;
 }
@@ -231,14 +242,15 @@ void DofMap::sync(State& state, double lambda) const {
   // Planar nodes: minimal-norm correction onto the intersection of their planes.
   for (Index a = 0; a < static_cast<Index>(node_.size()); ++a) {
     const NodeInfo& node = node_[a];
-    if (node.planes.empty() || (node.kind != NodeKind::Planar && node.kind != NodeKind::Prescribed)) continue;
+    if (node.planar < 0 || (node.kind != NodeKind::Planar && node.kind != NodeKind::Prescribed)) continue;
     if (node.kind == NodeKind::Prescribed && node.owner >= 0) continue;  // set by a prescribed set
-    const int k = static_cast<int>(node.planes.size());
+    const std::vector<Index>& planes = planar_[static_cast<std::size_t>(node.planar)].planes;
+    const int k = static_cast<int>(planes.size());
     Eigen::Matrix<double, Eigen::Dynamic, 3> N(k, 3);
     VectorX residual(k);
     const Vector3 u = (state.x.row(a) - X.row(a)).transpose();
     for (int i = 0; i < k; ++i) {
-      const PlanarNodes& plane = problem_.planar[node.planes[i]];
+      const PlanarNodes& plane = problem_.planar[planes[i]];
       const Vector3 nrm = plane.normal.normalized();
       N.row(i) = nrm.transpose();
       residual[i] = plane.displacement * plane.amplitude(lambda) - nrm.dot(u);
@@ -263,8 +275,9 @@ State DofMap::apply_step(const State& base, const VectorX& dq, double alpha) con
   for (Index a = 0; a < static_cast<Index>(node_.size()); ++a) {
     const NodeInfo& node = node_[a];
     if (node.kind != NodeKind::Free && node.kind != NodeKind::Planar) continue;
+    const Matrix3& allowed = basis(node);
     Vector3 dx = Vector3::Zero();
-    for (int j = 0; j < node.ndof; ++j) dx += node.basis.col(j) * dq[node.dof + j];
+    for (int j = 0; j < node.ndof; ++j) dx += allowed.col(j) * dq[node.dof + j];
     out.x.row(a) += alpha * dx.transpose();
   }
   for (std::size_t r = 0; r < rigid_.size(); ++r) {

@@ -73,14 +73,21 @@ class DofMap {
   State extrapolate(const State& older, const State& newer, double s, double lambda) const;
 
  private:
+  /// One per node (20 bytes: most nodes are free, and the planar ones keep their bases apart).
   struct NodeInfo {
     NodeKind kind = NodeKind::Free;
     Index dof = 0;       // first q index (Free/Planar) or the body's (RigidMember of a free body)
     int ndof = 3;        // 3 Free, 1-2 Planar, 0 Prescribed / fixed rigid, 6 free-rigid member
     Index owner = -1;    // prescribed set or rigid body index
-    Matrix3 basis = Matrix3::Identity();  // Planar: first ndof columns span the allowed motion
-    std::vector<Index> planes;            // Planar: indices into problem.planar
+    Index planar = -1;   // index into planar_ for a node a planar constraint holds, else -1
   };
+  /// A node held by planar constraints.
+  struct PlanarInfo {
+    Matrix3 basis = Matrix3::Identity();  // first ndof columns span the allowed motion
+    std::vector<Index> planes;            // indices into problem.planar
+  };
+  /// The columns of the node's allowed motion: the identity for a free node.
+  const Matrix3& basis(const NodeInfo& node) const;
   struct RigidInfo {
     RigidBody::Kind kind;
     RigidMotion motion;
@@ -94,6 +101,7 @@ class DofMap {
 
   const Problem& problem_;
   std::vector<NodeInfo> node_;
+  std::vector<PlanarInfo> planar_;
   std::vector<RigidInfo> rigid_;
   Index num_dofs_ = 0;
   Positions start_x_;                   ///< #V x 3 after set_start, else 0 rows
