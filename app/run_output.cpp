@@ -152,7 +152,8 @@ void RunOutput::add_multiplier_cells(const solver::StepRecord& step, std::vector
 void RunOutput::write_row(std::vector<io::CsvTable::Cell> row, const fem::State& state,
                           const contact::ContactReport* contact, bool flush) {
   const auto gradient = model_.objective->full_gradient(state);
-  if (parallel::size() > 1) last_elastic_energy_ = parallel::sum(model_.elastic->value(state.x));  // every rank is here
+  // For the stabilization ratio of a static run's summary (every rank is here).
+  if (parallel::size() > 1 && !model_.is_dynamic()) last_elastic_energy_ = parallel::sum(model_.elastic->value(state.x));
   for (const auto& reaction : fem::compute_reactions(problem_, *model_.dofs, state, gradient)) {
     for (int k = 0; k < 3; ++k) row.emplace_back(reaction.force[k]);
     for (int k = 0; k < 3; ++k) row.emplace_back(reaction.moment[k]);
@@ -206,7 +207,7 @@ void RunOutput::resume(const model::Checkpoint& checkpoint) {
   newton_->restore(rows("newton"));
   if (rigid_) rigid_->restore(rows("rigid_bodies"));
   series_->restore(checkpoint.series);
-  if (parallel::size() > 1)  // every rank resumes
+  if (parallel::size() > 1 && !model_.is_dynamic())  // every rank resumes
     last_elastic_energy_ = parallel::sum(model_.elastic->value(checkpoint.snapshot.stepper.state.x));
 }
 

@@ -127,8 +127,8 @@ class RunOutput {
   void write_rigid_row(std::vector<io::CsvTable::Cell> row, const fem::State& state, bool flush);
   std::string directory_;
   double setup_seconds_ = 0;
-  /// On several ranks: the elastic energy summed over the ranks at the last row written
-  /// (write_row), for a summary that only rank 0 may reach (energy).
+  /// On several ranks, static runs: the elastic energy summed over the ranks at the last row
+  /// written (write_row), for a summary that only rank 0 may reach (energy).
   double last_elastic_energy_ = 0;
   const fem::Problem& problem_;
   model::Model& model_;

@@ -29,14 +29,14 @@ Vector12 tet_gradient(const Matrix3& P, const TetRestShape& rest) {
 
 ElasticEnergy::ElasticEnergy(const Positions& rest, const Tets& tets,
                              std::vector<material::MaterialPtr> tet_material, ElasticEnergyOptions options)
-    : tets_(tets), options_(std::move(options)) {
+    : tets_(tets), project_hessians_(options.project_hessians) {
   if (tet_material.size() != static_cast<std::size_t>(tets.rows()))
     throw Error("ElasticEnergy: one material per tet expected");
   // Every tet's shape is checked (a degenerate one throws), and the deformable tets' are kept:
   // a rank's share keeps its own only (docs/mpi.md).
   const std::vector<TetRestShape> every_rest_shape = compute_rest_shapes(rest, tets);
   num_nodes_ = static_cast<Index>(rest.rows());
-  const std::vector<bool>& evaluated = options_.evaluated_tets;
+  const std::vector<bool>& evaluated = options.evaluated_tets;  // kept as active_ (and deformable_)
   if (!evaluated.empty()) {
     if (evaluated.size() != tet_material.size()) throw Error("ElasticEnergy: one evaluated-tet flag per tet expected");
     deformable_.resize(tet_material.size());
@@ -167,7 +167,7 @@ void ElasticEnergy::add_hessian(const Positions& x, BlockSparseMatrix& H) const 
       Matrix3 P;
       Matrix9 dPdF;
       material_[s]->evaluate(F, &P, &dPdF);
-      if (options_.project_hessians) dPdF = project_to_psd(dPdF);
+      if (project_hessians_) dPdF = project_to_psd(dPdF);
       const Eigen::Matrix<double, 9, 12> B = deformation_gradient_jacobian(rest_[s].Dm_inv);
       // Coefficient-wise products: for 12 x 9 x 12 Eigen's general product would pack and block.
       const Eigen::Matrix<double, 12, 9> BtA = B.transpose().lazyProduct(dPdF);

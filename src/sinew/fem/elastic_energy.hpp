@@ -56,7 +56,7 @@ class ElasticEnergy final : public Energy {
   std::vector<TetRestShape> rest_;               // per deformable tet, in active_'s order
   std::vector<Index> active_;                    // deformable tets it evaluates
   std::vector<bool> deformable_;                 // per tet, for a share's whole pattern (empty otherwise)
-  ElasticEnergyOptions options_;
+  bool project_hessians_ = false;  // ElasticEnergyOptions::project_hessians
   Index num_nodes_ = 0;
   // node -> (active tet slot * 4 + local node) for race-free gathering, CSR
   std::vector<Index> incidence_offsets_, incidence_;
