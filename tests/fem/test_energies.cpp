@@ -241,6 +241,52 @@ TEST(ElasticEnergy, ComplementarySharesAddUpToTheWholeTerm) {
               ::testing::ThrowsMessage<Error>(::testing::HasSubstr("one evaluated-tet flag per tet")));
 }
 
+// add_hessian computes the tets' Hessians 4,096 at a time. A mesh of three such chunks gives the
+// Hessian that shares of under one chunk each add up to (each computed in a single chunk), and
+// the Hessian agrees with central differences of the gradient, which is assembled whole.
+TEST(ElasticEnergy, HessiansComputedInChunksAddUpAcrossTheChunkBoundaries) {
+  auto p = st::box_problem(12, 12, 10, Vector3(0, 0, 0), Vector3(1, 1, 0.8), st::mooney_rivlin());
+  const auto num_tets = static_cast<std::size_t>(p.mesh.tets.rows());
+  ASSERT_GT(num_tets, 2u * 4096u);
+  const Index num_nodes = static_cast<Index>(p.mesh.rest.rows());
+  fem::ElasticEnergy whole(p.mesh.rest, p.mesh.tets, st::tet_materials(p));
+  std::vector<std::pair<Index, Index>> pairs;
+  whole.hessian_pattern(pairs);
+  BlockSparseMatrix W, S;
+  W.set_pattern(num_nodes, pairs);
+  S.set_pattern(num_nodes, pairs);
+  whole.bind_pattern(W);
+  const Positions x = perturbed(p.mesh.rest, 0.01, 11);
+  whole.add_hessian(x, W);
+
+  // Three interleaved shares of under 4,096 tets each.
+  for (std::size_t share = 0; share < 3; ++share) {
+    std::vector<bool> mine(num_tets);
+    for (std::size_t t = share; t < num_tets; t += 3) mine[t] = true;
+    fem::ElasticEnergy part(p.mesh.rest, p.mesh.tets, st::tet_materials(p), {.evaluated_tets = mine});
+    ASSERT_LT(part.deformable_tets().size(), 4096u);
+    part.bind_pattern(S);
+    part.add_hessian(x, S);
+  }
+  double largest = 0, difference = 0;
+  for (std::size_t k = 0; k < W.values().size(); ++k) {
+    largest = std::max(largest, W.values()[k].cwiseAbs().maxCoeff());
+    difference = std::max(difference, (W.values()[k] - S.values()[k]).cwiseAbs().maxCoeff());
+  }
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LE(difference, 1e-12 * largest);
+
+  // H v against (g(x + h v) - g(x - h v)) / 2h for a random v.
+  const VectorX v = flatten(perturbed(Positions::Zero(num_nodes, 3), 1.0, 13));
+  const double h = 1e-6;
+  NodalVectors plus = NodalVectors::Zero(num_nodes, 3), minus = plus;
+  whole.add_gradient(x + h * unflatten(v), plus);
+  whole.add_gradient(x - h * unflatten(v), minus);
+  const VectorX difference_quotient = (flatten(plus) - flatten(minus)) / (2 * h);
+  const VectorX product = W.multiply(v);
+  EXPECT_LE((product - difference_quotient).norm(), 1e-6 * product.norm());
+}
+
 TEST(ElasticEnergy, ProjectedHessianIsPositiveSemiDefinite) {
   auto p = st::box_problem(2, 1, 1, Vector3(0, 0, 0), Vector3(2, 1, 1), st::mooney_rivlin());
   fem::ElasticEnergy energy(p.mesh.rest, p.mesh.tets, st::tet_materials(p), {.project_hessians = true});

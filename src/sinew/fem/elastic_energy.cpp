@@ -65,6 +65,19 @@ ElasticEnergy::ElasticEnergy(const Positions& rest, const Tets& tets,
   std::vector<Index> fill(incidence_offsets_.begin(), incidence_offsets_.end() - 1);
   for (std::size_t s = 0; s < active_.size(); ++s)
     for (int i = 0; i < 4; ++i) incidence_[fill[tets(active_[s], i)]++] = static_cast<Index>(4 * s + i);
+
+  chunk_node_offsets_.assign(1, 0);
+  std::vector<Index> nodes;
+  for (std::size_t first = 0; first < active_.size(); first += kHessianChunk) {
+    const std::size_t last = std::min(first + kHessianChunk, active_.size());
+    nodes.clear();
+    for (std::size_t s = first; s < last; ++s)
+      for (int i = 0; i < 4; ++i) nodes.push_back(tets(active_[s], i));
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    chunk_nodes_.insert(chunk_nodes_.end(), nodes.begin(), nodes.end());
+    chunk_node_offsets_.push_back(static_cast<Index>(chunk_nodes_.size()));
+  }
 }
 
 double ElasticEnergy::value(const Positions& x) const {
@@ -159,34 +172,45 @@ void ElasticEnergy::bind_pattern(const BlockSparseMatrix& H) {
 void ElasticEnergy::add_hessian(const Positions& x, BlockSparseMatrix& H) const {
   if (bound_version_ != H.pattern_version() || block_index_.size() != 16 * active_.size())
     throw Error("ElasticEnergy::add_hessian: call bind_pattern() after the pattern changes");
-  std::vector<Matrix12> local(active_.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, active_.size(), 256), [&](const auto& r) {
-    for (std::size_t s = r.begin(); s < r.end(); ++s) {
-      const Index t = active_[s];
-      const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[s].Dm_inv);
-      Matrix3 P;
-      Matrix9 dPdF;
-      material_[s]->evaluate(F, &P, &dPdF);
-      if (project_hessians_) dPdF = project_to_psd(dPdF);
-      const Eigen::Matrix<double, 9, 12> B = deformation_gradient_jacobian(rest_[s].Dm_inv);
-      // Coefficient-wise products: for 12 x 9 x 12 Eigen's general product would pack and block.
-      const Eigen::Matrix<double, 12, 9> BtA = B.transpose().lazyProduct(dPdF);
-      local[s].noalias() = rest_[s].volume * BtA.lazyProduct(B);
-    }
-  });
-  // Gather by rows: each node's row blocks are written by one thread only.
+  // The tets' 12 x 12 Hessians are computed a chunk at a time (1,152 bytes per tet: the whole
+  // mesh's at once was the largest buffer of a run, docs/solver.md) and gathered by rows: each
+  // node's row blocks are written by one thread only, and in ascending tet order, so the sums are
+  // the same to the last bit whatever the chunk size.
+  std::vector<Matrix12> local(std::min(kHessianChunk, active_.size()));
   auto& values = H.values();
-  tbb::parallel_for(tbb::blocked_range<Index>(0, num_nodes_, 512), [&](const auto& r) {
-    for (Index a = r.begin(); a < r.end(); ++a) {
-      for (Index k = incidence_offsets_[a]; k < incidence_offsets_[a + 1]; ++k) {
-        const Index slot = incidence_[k];
-        const std::size_t s = static_cast<std::size_t>(slot / 4);
-        const int i = slot % 4;
-        for (int j = 0; j < 4; ++j)
-          values[static_cast<std::size_t>(block_index_[16 * s + 4 * i + j])] += local[s].block<3, 3>(3 * i, 3 * j);
+  for (std::size_t first = 0, chunk = 0; first < active_.size(); first += kHessianChunk, ++chunk) {
+    const std::size_t last = std::min(first + kHessianChunk, active_.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 256), [&](const auto& r) {
+      for (std::size_t s = r.begin(); s < r.end(); ++s) {
+        const Index t = active_[s];
+        const Matrix3 F = deformation_gradient(gather_tet(x, tets_, t), rest_[s].Dm_inv);
+        Matrix3 P;
+        Matrix9 dPdF;
+        material_[s]->evaluate(F, &P, &dPdF);
+        if (project_hessians_) dPdF = project_to_psd(dPdF);
+        const Eigen::Matrix<double, 9, 12> B = deformation_gradient_jacobian(rest_[s].Dm_inv);
+        // Coefficient-wise products: for 12 x 9 x 12 Eigen's general product would pack and block.
+        const Eigen::Matrix<double, 12, 9> BtA = B.transpose().lazyProduct(dPdF);
+        local[s - first].noalias() = rest_[s].volume * BtA.lazyProduct(B);
       }
-    }
-  });
+    });
+    const Index first_slot = static_cast<Index>(4 * first), end_slot = static_cast<Index>(4 * last);
+    tbb::parallel_for(tbb::blocked_range<Index>(chunk_node_offsets_[chunk], chunk_node_offsets_[chunk + 1], 256),
+                      [&](const auto& r) {
+      for (Index n = r.begin(); n < r.end(); ++n) {
+        const Index a = chunk_nodes_[static_cast<std::size_t>(n)];
+        const auto begin = incidence_.begin() + incidence_offsets_[a], end = incidence_.begin() + incidence_offsets_[a + 1];
+        for (auto it = std::lower_bound(begin, end, first_slot); it != end && *it < end_slot; ++it) {
+          const Index slot = *it;
+          const std::size_t s = static_cast<std::size_t>(slot / 4);
+          const int i = slot % 4;
+          for (int j = 0; j < 4; ++j)
+            values[static_cast<std::size_t>(block_index_[16 * s + 4 * i + j])] +=
+                local[s - first].block<3, 3>(3 * i, 3 * j);
+        }
+      }
+    });
+  }
 }
 
 TetMeasures compute_tet_measures(const Positions& x, const ElasticEnergy& elastic) {

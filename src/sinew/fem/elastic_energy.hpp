@@ -51,6 +51,9 @@ class ElasticEnergy final : public Energy {
   const std::vector<TetRestShape>& rest_shapes() const { return rest_; }
 
  private:
+  /// Tets whose element Hessians add_hessian holds at once (4.7 MB; measured in docs/solver.md).
+  static constexpr std::size_t kHessianChunk = 4096;
+
   const Tets& tets_;
   std::vector<material::MaterialPtr> material_;  // per deformable tet, in active_'s order
   std::vector<TetRestShape> rest_;               // per deformable tet, in active_'s order
@@ -58,8 +61,10 @@ class ElasticEnergy final : public Energy {
   std::vector<bool> deformable_;                 // per tet, for a share's whole pattern (empty otherwise)
   bool project_hessians_ = false;  // ElasticEnergyOptions::project_hessians
   Index num_nodes_ = 0;
-  // node -> (active tet slot * 4 + local node) for race-free gathering, CSR
+  // node -> (active tet slot * 4 + local node) for race-free gathering, CSR, ascending per node
   std::vector<Index> incidence_offsets_, incidence_;
+  // the nodes of each chunk of kHessianChunk active tets (add_hessian), CSR, ascending per chunk
+  std::vector<Index> chunk_node_offsets_, chunk_nodes_;
   std::vector<Index> block_index_;  // 16 per active tet, row-major (i, j)
   std::uint64_t bound_version_ = 0;
 };
