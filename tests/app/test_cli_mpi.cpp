@@ -23,9 +23,11 @@
 #include "sinew/core/error.hpp"
 #include "sinew/fem/elastic_energy.hpp"
 #include "sinew/fem/quadratic_energy.hpp"
+#include "sinew/fem/rigid_body_modes.hpp"
 #include "sinew/model/model.hpp"
 #include "sinew/parallel/ranks.hpp"
 #include "sinew/scene/load_scene.hpp"
+#include "sinew/solver/petsc_linear_solver.hpp"
 
 namespace sinew::app_test {
 namespace {
@@ -327,6 +329,31 @@ TEST(RanksUnderMpirun, EachRankHoldsTheElasticTermOfItsOwnTetsOnlyAndTheirSumIsT
   EXPECT_LE(difference, 1e-12 * largest);
 }
 
+// GAMG's near-null space on ranks (solver::rigid_body_modes_of_rows): each rank fits the rows it
+// holds, and together they are an orthonormal basis of the span one process gets.
+TEST(RanksUnderMpirun, EachRankFitsTheRigidBodyModesOfItsRowsAndTogetherTheyAreOneBasis) {
+  if (parallel::launched_size() <= 1) GTEST_SKIP() << "runs under mpirun (Mpi.TheRankHelpersWorkUnderMpirun)";
+  parallel::start();
+  model::Model model = model::build_model(scene::parse_scene(example("hertz-ball"), ""));
+  const fem::DofMap& dofs = *model.dofs;
+  const fem::State state = dofs.initial_state(0.5);
+  const Index n = dofs.num_dofs();
+  std::vector<Index> mine;
+  for (Index q = 0; q < n; ++q)
+    if ((q / 7) % parallel::size() == parallel::rank()) mine.push_back(q);
+  const MatrixX rows = solver::rigid_body_modes_of_rows(
+      [&](const std::vector<Index>& unknowns) { return fem::rigid_body_motions(dofs, state, unknowns); }, mine);
+  ASSERT_EQ(rows.rows(), static_cast<Index>(mine.size()));
+  const MatrixX modes = fem::rigid_body_modes(dofs, state);
+  ASSERT_EQ(rows.cols(), modes.cols()) << "rank " << parallel::rank();
+  ASSERT_GT(modes.cols(), 0);
+  MatrixX joined = MatrixX::Zero(n, rows.cols());
+  for (std::size_t i = 0; i < mine.size(); ++i) joined.row(mine[i]) = rows.row(static_cast<Index>(i));
+  parallel::sum(joined.data(), static_cast<std::size_t>(joined.size()));
+  EXPECT_LT((joined.transpose() * joined - MatrixX::Identity(modes.cols(), modes.cols())).norm(), 1e-12);
+  EXPECT_LT((modes - joined * (joined.transpose() * modes)).norm(), 1e-10) << "not the span of one process's modes";
+}
+
 TEST(RanksUnderMpirun, GatherAllConcatenatesEveryRanksBytesInRankOrder) {
   if (parallel::launched_size() <= 1) GTEST_SKIP() << "runs under mpirun (Mpi.TheRankHelpersWorkUnderMpirun)";
   parallel::start();
@@ -381,10 +408,10 @@ TEST_F(Mpi, TheRankHelpersWorkUnderMpirun) {
   const CommandResult result = run_program(fs::read_symlink("/proc/self/exe").string(), {"--gtest_filter=RanksUnderMpirun.*", "--gtest_color=no"}, directory,
                                            with_timeout(mpirun(2)));
   EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
-  // Each of the 2 ranks ran the six tests and none skipped.
+  // Each of the 2 ranks ran the seven tests and none skipped.
   std::size_t passed = 0;
-  for (std::size_t at = result.out.find("[  PASSED  ] 6 tests"); at != std::string::npos;
-       at = result.out.find("[  PASSED  ] 6 tests", at + 1))
+  for (std::size_t at = result.out.find("[  PASSED  ] 7 tests"); at != std::string::npos;
+       at = result.out.find("[  PASSED  ] 7 tests", at + 1))
     ++passed;
   EXPECT_EQ(passed, 2u) << result.out;
   EXPECT_EQ(result.out.find("SKIPPED"), std::string::npos) << result.out;

@@ -93,6 +93,17 @@ TEST_P(HessianReductionPattern, HoldsExactlyTheEntriesOfJtHJ) {
   for (Index c = 0; c < n; ++c)
     for (Index k = K.outerIndexPtr()[c] + 1; k < K.outerIndexPtr()[c + 1]; ++k)
       EXPECT_LT(K.innerIndexPtr()[k - 1], K.innerIndexPtr()[k]) << "column " << c << " is not strictly sorted";
+
+  // A K of the same size and number of nonzeros but another pattern (another pattern's K of the
+  // same count) takes the bound pattern; it does not keep its own.
+  std::vector<Eigen::Triplet<double>> packed;
+  for (Index k = 0; k < K.nonZeros(); ++k) packed.emplace_back(k % n, k / n, 1.0);
+  fem::SparseMatrix other(n, n);
+  other.setFromTriplets(packed.begin(), packed.end());
+  ASSERT_EQ(other.nonZeros(), K.nonZeros());
+  reduction.reduce(state, H, NodalVectors::Zero(H.num_nodes(), 3), VectorX(), other);
+  EXPECT_EQ(MatrixX(other), MatrixX(K));
+  EXPECT_TRUE(std::equal(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros(), other.innerIndexPtr()));
 }
 
 INSTANTIATE_TEST_SUITE_P(RigidKinds, HessianReductionPattern,

@@ -7,6 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+#include <vector>
+
 #include "sinew/fem/elastic_energy.hpp"
 #include "sinew/fem/hessian_reduction.hpp"
 #include "support/problem_builder.hpp"
@@ -85,6 +89,51 @@ TEST(RigidBodyModes, StayOrthonormalUnderPlanarConstraintsWithBlockSizeOne) {
   EXPECT_LT((K * along_y).norm(), 1e-10 * scale * along_y.norm());
   const VectorX projected = modes * (modes.transpose() * along_y);
   EXPECT_LT((projected - along_y).norm(), 1e-10 * along_y.norm());
+}
+
+// On several MPI ranks each fits the rows it holds, and a Gram matrix summed over them (twice)
+// makes the rows one orthonormal basis (solver::rigid_body_modes_of_rows). Two interleaved sets of
+// rows stand for two ranks here: they give the fit of all rows, and a basis of the same span as
+// the QR of one process.
+TEST(RigidBodyModes, RowsFittedApartAndJoinedByTheirSummedGramMatrixSpanTheModes) {
+  fem::Problem problem = floating_problem();
+  problem.planar.push_back({"x0", st::nodes_on_plane(problem.mesh, 0, 0.0), Vector3(1, 0, 0), 0.0, {}});
+  const fem::DofMap dofs(problem);
+  const fem::State rest = dofs.initial_state(0);
+  const Index n = dofs.num_dofs();
+  std::vector<Index> every(static_cast<std::size_t>(n)), rank[2];
+  for (Index q = 0; q < n; ++q) {
+    every[static_cast<std::size_t>(q)] = q;
+    rank[(q / 7) % 2].push_back(q);  // runs of 7 rows, like a partition cutting a rigid body's six
+  }
+  const MatrixX whole = fem::rigid_body_motions(dofs, rest, every);
+  MatrixX part[2] = {fem::rigid_body_motions(dofs, rest, rank[0]), fem::rigid_body_motions(dofs, rest, rank[1])};
+  for (int r = 0; r < 2; ++r)
+    for (std::size_t i = 0; i < rank[r].size(); ++i)
+      EXPECT_EQ(part[r].row(static_cast<Index>(i)), whole.row(rank[r][i])) << "unknown " << rank[r][i];
+
+  for (int round = 0; round < 2; ++round) {
+    const MatrixX gram = part[0].transpose() * part[0] + part[1].transpose() * part[1];
+    const MatrixX T = fem::orthonormalizing_transform(gram);
+    ASSERT_EQ(T.cols(), 6);
+    for (auto& p : part) p = p * T;
+  }
+  MatrixX joined(n, 6);
+  for (int r = 0; r < 2; ++r)
+    for (std::size_t i = 0; i < rank[r].size(); ++i) joined.row(rank[r][i]) = part[r].row(static_cast<Index>(i));
+  EXPECT_LT((joined.transpose() * joined - MatrixX::Identity(6, 6)).norm(), 1e-13);
+  const MatrixX modes = fem::rigid_body_modes(dofs, rest);
+  EXPECT_LT((modes - joined * (joined.transpose() * modes)).norm(), 1e-12);  // the same span
+  EXPECT_LT((joined - modes * (modes.transpose() * joined)).norm(), 1e-12);
+
+  // A direction the rows do not span is left out, and a Gram matrix that is not finite gives none.
+  MatrixX gram = MatrixX::Zero(3, 3);
+  gram.diagonal() << 4.0, 0.0, 1e-20;
+  const MatrixX T = fem::orthonormalizing_transform(gram);
+  ASSERT_EQ(T.cols(), 1);
+  EXPECT_NEAR(std::abs(T(0, 0)), 0.5, 1e-15);
+  gram(1, 1) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(fem::orthonormalizing_transform(gram).cols(), 0);
 }
 
 }  // namespace

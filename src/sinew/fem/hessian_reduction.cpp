@@ -83,14 +83,13 @@ void HessianReduction::bind(const BlockSparseMatrix& H) {
     }
     d += ndof;
   }
-  const std::vector<double> zeros(inner.size(), 0.0);
-  pattern_ = Eigen::Map<const SparseMatrix>(num_dofs, num_dofs, static_cast<Index>(inner.size()), outer.data(),
-                                            inner.data(), zeros.data());
+  pattern_outer_ = std::move(outer);
+  pattern_inner_ = std::move(inner);
 
   // Where each block entry goes: the rows of a's range are contiguous in every column of b's
   // range, at the same place in each, so one search per block finds them all.
-  const int* outer_ptr = pattern_.outerIndexPtr();
-  const int* inner_ptr = pattern_.innerIndexPtr();
+  const int* outer_ptr = pattern_outer_.data();
+  const int* inner_ptr = pattern_inner_.data();
   auto value_index = [&](Index row, Index col) -> Index {
     const int* begin = inner_ptr + outer_ptr[col];
     const int* end = inner_ptr + outer_ptr[col + 1];
@@ -120,7 +119,17 @@ void HessianReduction::reduce(const State& state, const BlockSparseMatrix& H, co
                               const VectorX& node_viscosity, SparseMatrix& K) const {
   const Index num_dofs_ = dofs_.num_dofs();
   if (bound_version_ != H.pattern_version()) throw std::logic_error("HessianReduction::reduce: bind() was not called for this pattern");  // a programming error
-  if (K.nonZeros() != pattern_.nonZeros() || K.rows() != num_dofs_) K = pattern_;
+  const auto nonzeros = static_cast<Index>(pattern_inner_.size());
+  const bool has_pattern = K.rows() == num_dofs_ && K.cols() == num_dofs_ && K.isCompressed() &&
+                           K.nonZeros() == nonzeros &&
+                           std::equal(pattern_outer_.begin(), pattern_outer_.end(), K.outerIndexPtr()) &&
+                           std::equal(pattern_inner_.begin(), pattern_inner_.end(), K.innerIndexPtr());
+  if (!has_pattern) {
+    K.resize(num_dofs_, num_dofs_);  // compressed, empty
+    K.resizeNonZeros(nonzeros);
+    std::copy(pattern_outer_.begin(), pattern_outer_.end(), K.outerIndexPtr());
+    std::copy(pattern_inner_.begin(), pattern_inner_.end(), K.innerIndexPtr());
+  }
   double* values = K.valuePtr();
   std::fill(values, values + K.nonZeros(), 0.0);
 

@@ -6,6 +6,7 @@
 /// GMRES with diagonal preconditioning stopped at a loose relative residual (the seed's choice),
 /// and diagonally preconditioned CG.
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -42,11 +43,16 @@ class LinearSolver {
   /// smaller of eta and its lagged_tolerance; eta = 0: factorize, no lagged CG). Others ignore it.
   virtual void require_relative_residual(double /*eta*/) {}
   /// True when the solver's preconditioner uses the rigid-body modes (PETSc's GAMG): the caller
-  /// then passes them with set_rigid_body_modes before each factorize().
+  /// then passes their source with set_rigid_body_motions before each factorize().
   virtual bool wants_rigid_body_modes() const { return false; }
-  /// `modes`: #dofs x (up to 6) orthonormal columns (fem::rigid_body_modes); `block_size`: 3 when
-  /// the unknowns come in aligned triples, else 1 (fem::unknowns_block_size).
-  virtual void set_rigid_body_modes(const MatrixX& /*modes*/, int /*block_size*/) {}
+  /// The rigid-body motions at the listed unknowns, #unknowns x 6, not orthonormal
+  /// (fem::rigid_body_motions at the state of the next factorization).
+  using RigidBodyMotions = std::function<MatrixX(const std::vector<Index>& unknowns)>;
+  /// `motions`: called by the next factorize() for the unknowns of this process's rows (on several
+  /// MPI ranks each takes its own: the modes are never whole on a rank, docs/mpi.md), and not
+  /// kept after it; `block_size`: 3 when the unknowns come in aligned triples, else 1
+  /// (fem::unknowns_block_size).
+  virtual void set_rigid_body_motions(RigidBodyMotions /*motions*/, int /*block_size*/) {}
   /// On a solve shared among MPI ranks (PETSc's): `owner` (#unknowns, or empty) says which rank
   /// holds each unknown's row of K (solver/row_order.hpp); empty: contiguous ranges. Others
   /// ignore it.

@@ -75,7 +75,10 @@ void NewtonSolver::prepare_linear_solver(const fem::State& state) {
   }
   if (!linear_->wants_rigid_body_modes()) return;
   const fem::DofMap& dofs = objective_.dofs();
-  linear_->set_rigid_body_modes(fem::rigid_body_modes(dofs, state), fem::unknowns_block_size(dofs, state.x.rows()));
+  // Called within the factorize() that follows, while `state` is alive.
+  linear_->set_rigid_body_motions(
+      [&dofs, &state](const std::vector<Index>& unknowns) { return fem::rigid_body_motions(dofs, state, unknowns); },
+      fem::unknowns_block_size(dofs, state.x.rows()));
 }
 
 LinearCounts NewtonSolver::counts() const {

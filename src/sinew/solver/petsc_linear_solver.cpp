@@ -12,6 +12,7 @@
 
 #include "sinew/core/error.hpp"
 #include "sinew/core/log.hpp"
+#include "sinew/fem/rigid_body_modes.hpp"
 #include "sinew/parallel/petsc.hpp"
 #include "sinew/parallel/ranks.hpp"
 #include "sinew/solver/row_order.hpp"
@@ -43,6 +44,7 @@ class PetscSolver final : public LinearSolver {
     // K is symmetric and stored in full, so its compressed columns are also its compressed rows.
     ksp_.reset();
     A_.reset();
+    ++layout_;
     const auto n = static_cast<PetscInt>(K.rows());
     rows_ = n;
     std::vector<PetscInt> starts(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
@@ -131,13 +133,16 @@ class PetscSolver final : public LinearSolver {
       // Each rank adds its part of K (Objective::set_hessian_summed): the rows it touches, its own
       // and its neighbours' (PETSc sends those to their holders at assembly); its rows of zeros
       // are left out, so a rank sends little beyond its part of the mesh.
+      // A row's values at a time: a copy of all of them would be another 8 bytes per nonzero.
       check(MatZeroEntries(A_.get()), "MatZeroEntries");
-      std::vector<PetscScalar> values(value_source_.size());
-      for (std::size_t k = 0; k < values.size(); ++k) values[k] = K.valuePtr()[value_source_[k]];
+      std::vector<PetscScalar> values;
       for (PetscInt row = 0; row < rows_; ++row) {
         const auto begin = row_starts_[static_cast<std::size_t>(row)], end = row_starts_[static_cast<std::size_t>(row) + 1];
-        if (std::all_of(values.begin() + begin, values.begin() + end, [](double v) { return v == 0.0; })) continue;
-        check(MatSetValues(A_.get(), 1, &row, end - begin, row_columns_.data() + begin, values.data() + begin, ADD_VALUES),
+        values.resize(static_cast<std::size_t>(end - begin));
+        for (PetscInt k = begin; k < end; ++k)
+          values[static_cast<std::size_t>(k - begin)] = K.valuePtr()[value_source_[static_cast<std::size_t>(k)]];
+        if (std::all_of(values.begin(), values.end(), [](double v) { return v == 0.0; })) continue;
+        check(MatSetValues(A_.get(), 1, &row, end - begin, row_columns_.data() + begin, values.data(), ADD_VALUES),
               "MatSetValues");
       }
     } else {
@@ -148,7 +153,11 @@ class PetscSolver final : public LinearSolver {
     }
     check(MatAssemblyBegin(A_.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
     check(MatAssemblyEnd(A_.get(), MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
-    if (gamg_ && modes_.cols() > 0 && modes_.rows() == K.rows()) {
+    if (gamg_ && motions_) {
+      compute_rigid_body_modes();
+      motions_ = nullptr;  // its state is gone after this factorization
+    }
+    if (gamg_ && modes_.cols() > 0 && modes_layout_ == layout_ && modes_.rows() == local_rows_) {
       std::vector<VecHandle> vectors(static_cast<std::size_t>(modes_.cols()));
       std::vector<Vec> raw;
       for (Index c = 0; c < modes_.cols(); ++c) {
@@ -156,8 +165,7 @@ class PetscSolver final : public LinearSolver {
         check(VecCreateMPI(communicator(), local_rows_, static_cast<PetscInt>(K.rows()), &*v), "VecCreateMPI");
         PetscScalar* data = nullptr;
         check(VecGetArray(v.get(), &data), "VecGetArray");
-        const VectorX mine = local_part(modes_.col(c));
-        std::copy(mine.data(), mine.data() + local_rows_, data);
+        std::copy(modes_.col(c).data(), modes_.col(c).data() + local_rows_, data);
         check(VecRestoreArray(v.get(), &data), "VecRestoreArray");
         raw.push_back(v.get());
       }
@@ -211,8 +219,8 @@ class PetscSolver final : public LinearSolver {
   }
   int factorizations() const override { return factorizations_; }
   bool wants_rigid_body_modes() const override { return gamg_; }
-  void set_rigid_body_modes(const MatrixX& modes, int block_size) override {
-    modes_ = modes;
+  void set_rigid_body_motions(RigidBodyMotions motions, int block_size) override {
+    motions_ = std::move(motions);
     if (block_size != block_size_) {
       block_size_ = block_size;
       A_.reset();  // the block size is set before preallocation: rebuild on the next factorize
@@ -248,6 +256,17 @@ class PetscSolver final : public LinearSolver {
     if (distributed()) parallel::sum(squares, 2);
     const double nb = std::sqrt(squares[1]);
     return nb > 0 ? std::sqrt(squares[0]) / nb : std::sqrt(squares[0]);
+  }
+
+  /// The rigid-body modes of this rank's rows (local_rows_, in PETSc's order) from motions_.
+  /// Collective on several ranks.
+  void compute_rigid_body_modes() {
+    std::vector<Index> unknowns(static_cast<std::size_t>(local_rows_));
+    for (PetscInt i = 0; i < local_rows_; ++i)
+      unknowns[static_cast<std::size_t>(i)] =
+          distributed() ? static_cast<Index>(order_.old_of_new[static_cast<std::size_t>(first_row_ + i)]) : static_cast<Index>(i);
+    modes_ = rigid_body_modes_of_rows(motions_, unknowns);
+    modes_layout_ = layout_;
   }
 
   /// GAMG's smoothers are Chebyshev polynomials over [0.1, 1.1] times an estimate of each level's
@@ -347,7 +366,10 @@ class PetscSolver final : public LinearSolver {
   double tolerance_;
   int max_iterations_;
   int block_size_ = 1;
-  MatrixX modes_;
+  RigidBodyMotions motions_;  ///< set before a factorization that needs new modes, cleared by it
+  MatrixX modes_;             ///< the rigid-body modes of this rank's rows (local_rows_ x up to 6)
+  int layout_ = 0;            ///< counts the analyses (each may give this rank other rows)
+  int modes_layout_ = -1;     ///< the layout modes_ was computed for
   MatHandle A_;
   KspHandle ksp_;
   PetscInt rows_ = 0;              ///< K's rows (all ranks')
@@ -369,6 +391,17 @@ class PetscSolver final : public LinearSolver {
 
 std::unique_ptr<LinearSolver> make_petsc_linear_solver(const LinearSolverOptions& options) {
   return std::make_unique<PetscSolver>(options);
+}
+
+MatrixX rigid_body_modes_of_rows(const LinearSolver::RigidBodyMotions& motions, const std::vector<Index>& unknowns) {
+  MatrixX modes = motions(unknowns);
+  if (parallel::size() == 1) return fem::orthonormal_basis(std::move(modes));
+  for (int round = 0; round < 2; ++round) {
+    MatrixX gram = modes.transpose() * modes;
+    parallel::sum(gram.data(), static_cast<std::size_t>(gram.size()));
+    modes = modes * fem::orthonormalizing_transform(gram);
+  }
+  return modes;
 }
 
 }  // namespace sinew::solver
