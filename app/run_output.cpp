@@ -234,7 +234,7 @@ io::VtuData RunOutput::vtu_data(const fem::State& state) const {
   data.cell_fields.push_back({"von_mises_stress", MatrixX(measures.von_mises)});
   data.int_cell_fields.emplace_back("region", problem_.mesh.region);
   IndexVector rigid(problem_.mesh.num_tets());
-  for (Index t = 0; t < problem_.mesh.num_tets(); ++t) rigid[t] = model_.tet_material[t] ? 0 : 1;
+  for (Index t = 0; t < problem_.mesh.num_tets(); ++t) rigid[t] = fem::is_rigid_tet(problem_, t) ? 1 : 0;
   data.int_cell_fields.emplace_back("rigid", rigid);
   if (model_.contact) {
     const contact::ContactReport c = contact::contact_report(*model_.contact, state.x);

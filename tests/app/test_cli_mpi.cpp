@@ -289,14 +289,14 @@ TEST(RanksUnderMpirun, EachRankHoldsTheElasticTermOfItsOwnTetsOnlyAndTheirSumIsT
   // The rank's elastic term holds exactly the deformable tets it owns (docs/mpi.md).
   std::vector<Index> own;
   for (Index t = 0; t < tets.rows(); ++t)
-    if (model.tet_material[static_cast<std::size_t>(t)] && model.tet_owner[static_cast<std::size_t>(t)] == parallel::rank())
+    if (!fem::is_rigid_tet(*model.problem, t) && model.tet_owner[static_cast<std::size_t>(t)] == parallel::rank())
       own.push_back(t);
   EXPECT_EQ(model.elastic->deformable_tets(), own);
   EXPECT_GT(own.size(), 0u);
   EXPECT_EQ(model.elastic->rest_shapes().size(), own.size());
   EXPECT_EQ(model.elastic->materials().size(), own.size());
   // Summed over the ranks, value and gradient are those of the whole term, here built by the test.
-  const fem::ElasticEnergy whole(model.problem->mesh.rest, tets, model.tet_material);
+  const fem::ElasticEnergy whole(model.problem->mesh.rest, tets, fem::tet_laws(*model.problem));
   Positions x = model.problem->mesh.rest;
   for (Index i = 0; i < x.rows(); ++i)  // the same smooth deformation on every rank
     x.row(i) += 0.002 * Vector3(std::sin(40 * x(i, 2)), std::cos(30 * x(i, 0)), std::sin(50 * x(i, 1))).transpose();
@@ -314,7 +314,7 @@ TEST(RanksUnderMpirun, EachRankHoldsTheElasticTermOfItsOwnTetsOnlyAndTheirSumIsT
   whole.hessian_pattern(pairs);
   BlockSparseMatrix K0;
   K0.set_pattern(x.rows(), std::move(pairs));
-  fem::ElasticEnergy whole_bound(model.problem->mesh.rest, tets, model.tet_material);
+  fem::ElasticEnergy whole_bound(model.problem->mesh.rest, tets, fem::tet_laws(*model.problem));
   whole_bound.bind_pattern(K0);
   whole_bound.add_hessian(model.problem->mesh.rest, K0);
   const BlockSparseMatrix expected = fem::linear_combination(10.0, *model.dynamics->mass, 0.01, K0);
@@ -374,7 +374,7 @@ TEST(RanksUnderMpirun, EachRankDetectsThePairsOfItsTetsAndEveryRankEndsWithAllOf
   const Tets& tets = model.problem->mesh.tets;
   std::vector<char> in_ball(static_cast<std::size_t>(state.x.rows()), 0);
   for (Index e = 0; e < tets.rows(); ++e)
-    if (model.tet_material[static_cast<std::size_t>(e)])
+    if (!fem::is_rigid_tet(*model.problem, e))
       for (int k = 0; k < 4; ++k) in_ball[static_cast<std::size_t>(tets(e, k))] = 1;
   for (Index i = 0; i < state.x.rows(); ++i)
     if (in_ball[static_cast<std::size_t>(i)]) state.x(i, 2) -= 0.3;

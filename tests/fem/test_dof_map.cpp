@@ -68,6 +68,28 @@ fem::State scrambled(const fem::DofMap& dofs, double lambda) {
 
 }  // namespace
 
+TEST(Problem, ATetsLawIsItsOwnOrItsRegionsAndARigidTetHasNone) {
+  fem::Problem p = mixed_problem(fem::RigidBody::Kind::Prescribed);
+  Index rigid = -1, soft = -1;
+  for (Index t = 0; t < p.mesh.num_tets(); ++t) (p.region_material[p.mesh.region[t]] ? soft : rigid) = t;
+  ASSERT_GE(rigid, 0);
+  ASSERT_GE(soft, 0);
+  const material::MaterialPtr own = st::mooney_rivlin();
+  p.element_material[soft] = own;
+  p.element_material[rigid] = own;  // a law of its own makes a tet of a rigid region deformable
+  const std::vector<material::MaterialPtr> laws = fem::tet_laws(p);
+  ASSERT_EQ(laws.size(), static_cast<std::size_t>(p.mesh.num_tets()));
+  for (Index t = 0; t < p.mesh.num_tets(); ++t) {
+    const auto it = p.element_material.find(t);
+    const material::MaterialPtr expected = it != p.element_material.end() ? it->second : p.region_material[p.mesh.region[t]];
+    EXPECT_EQ(laws[static_cast<std::size_t>(t)], expected) << "tet " << t;
+    EXPECT_EQ(fem::is_rigid_tet(p, t), expected == nullptr) << "tet " << t;
+  }
+  EXPECT_FALSE(fem::is_rigid_tet(p, rigid));
+  p.element_material.erase(rigid);
+  EXPECT_TRUE(fem::is_rigid_tet(p, rigid));
+}
+
 TEST(DofMap, CountsDegreesOfFreedom) {
   Fixture f(fem::RigidBody::Kind::Free);
   const auto& p = f.problem;

@@ -46,7 +46,6 @@ TEST(BuildModel, AStaticContactSceneGetsElasticExternalAndContactTermsAndItsScal
   ASSERT_TRUE(model.contact_setup);
   EXPECT_FALSE(model.is_dynamic());
   EXPECT_EQ(model.contact_body_names(), (std::vector<std::string>{"box", "plate"}));
-  EXPECT_EQ(model.tet_material.size(), static_cast<std::size_t>(model.problem->mesh.num_tets()));
   // The reference force: the stiffest initial modulus (the bulk modulus lambda + 2 mu / 3) times
   // the squared bounding-box diagonal.
   const Vector3 extent(3, 3, 1.5);

@@ -7,6 +7,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "support/files.hpp"
 #include "support/temp_dir.hpp"
 #include "sinew/core/error.hpp"
+#include "sinew/io/atomic_file.hpp"
 #include "sinew/model/checkpoint.hpp"
 #include "sinew/model/solve_model.hpp"
 #include "sinew/scene/load_scene.hpp"
@@ -120,6 +122,21 @@ TEST(Checkpoint, AFileHoldsTheSnapshotExactly) {
   EXPECT_EQ(read.counters, (std::map<std::string, long long>{{"steps", 3}, {"newton", 17}}));
   EXPECT_EQ(read.series, checkpoint_of(snapshot).series);
   EXPECT_NO_THROW(check_snapshot_fits(model, read.snapshot, "the checkpoint"));
+}
+
+TEST(Checkpoint, AProcessThatWritesNoFilesLeavesNoCheckpoint) {
+  // The MPI ranks other than 0 (io::set_files_written(false)), which skip encoding it too.
+  Model model = built_model(static_scene());
+  const SolvedRun run = solve(model);
+  ASSERT_TRUE(run.result.success) << run.result.message;
+  sinew::testing::TempDir directory;
+  const std::string path = (directory / kCheckpointFile).string();
+  io::set_files_written(false);
+  write_checkpoint(path, checkpoint_of(run.snapshots.back()));
+  io::set_files_written(true);
+  EXPECT_FALSE(std::filesystem::exists(path));
+  write_checkpoint(path, checkpoint_of(run.snapshots.back()));
+  expect_same(read_checkpoint(path).snapshot, run.snapshots.back());
 }
 
 TEST(Checkpoint, AStaticRunResumedFromAnyStepEndsWhereTheRunEnded) {

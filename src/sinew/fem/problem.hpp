@@ -43,4 +43,21 @@ struct Problem {
   Vector3 gravity = Vector3::Zero();  ///< acceleration (length / time^2)
 };
 
+/// Whether tet `t` of `problem` carries no elastic energy: its region is rigid and it has no
+/// law of its own.
+inline bool is_rigid_tet(const Problem& problem, Index t) {
+  return !problem.region_material[static_cast<std::size_t>(problem.mesh.region[t])] &&
+         !problem.element_material.contains(t);
+}
+
+/// The law of every tet (#T): its own (element_material) or its region's; nullptr for a rigid
+/// tet. A vector of #T shared pointers (16 bytes a tet): build it where it is used, not to keep.
+inline std::vector<material::MaterialPtr> tet_laws(const Problem& problem) {
+  std::vector<material::MaterialPtr> laws(static_cast<std::size_t>(problem.mesh.num_tets()));
+  for (Index t = 0; t < problem.mesh.num_tets(); ++t)
+    laws[static_cast<std::size_t>(t)] = problem.region_material[static_cast<std::size_t>(problem.mesh.region[t])];
+  for (const auto& [t, law] : problem.element_material) laws[static_cast<std::size_t>(t)] = law;
+  return laws;
+}
+
 }  // namespace sinew::fem

@@ -214,6 +214,16 @@ struct Fnv1a {
   }
 };
 
+/// About the size of `c` in CBOR: its matrices' bytes and room for the rest.
+std::size_t expected_cbor_bytes(const Checkpoint& c) {
+  const solver::StepperSnapshot& s = c.snapshot.stepper;
+  const auto matrices = static_cast<std::size_t>(s.state.x.size() + s.scheme.previous.x.size() +
+                                                s.scheme.tangent.size() + s.scheme.velocity.size() +
+                                                c.snapshot.contact_penalty.size() + c.snapshot.contact_pressure.size());
+  const std::size_t doubles = matrices + 12 * (s.state.rigid.size() + s.scheme.previous.rigid.size());
+  return sizeof(double) * doubles + 128 * (c.series.size() + s.state.rigid.size() + c.counters.size()) + 4096;
+}
+
 }  // namespace
 
 RunSnapshot take_snapshot(const Model& model, const solver::StepperSnapshot& stepper) {
@@ -227,7 +237,12 @@ RunSnapshot take_snapshot(const Model& model, const solver::StepperSnapshot& ste
 }
 
 void write_checkpoint(const std::string& path, const Checkpoint& checkpoint) {
-  const std::vector<std::uint8_t> bytes = json::to_cbor(checkpoint_json(checkpoint));
+  // A rank that writes no files (MPI ranks other than 0) encodes nothing: the JSON and the bytes
+  // are two more copies of the whole snapshot (docs/mpi.md).
+  if (!io::files_written()) return;
+  std::vector<std::uint8_t> bytes;
+  bytes.reserve(expected_cbor_bytes(checkpoint));  // no doubling growth of the largest buffer
+  json::to_cbor(checkpoint_json(checkpoint), bytes);
   io::write_file_atomically(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 

@@ -292,13 +292,12 @@ Model build_model(const scene::SceneConfig& scene) {
   model.solver = scene.solver;
 
   const auto& mesh = problem.mesh;
-  model.tet_material.resize(static_cast<std::size_t>(mesh.num_tets()));
-  for (Index t = 0; t < mesh.num_tets(); ++t) model.tet_material[t] = problem.region_material[mesh.region[t]];
-  for (const auto& [t, law] : problem.element_material) model.tet_material[static_cast<std::size_t>(t)] = law;
+  // Not kept in the model: 16 bytes a tet, on every MPI rank (docs/mpi.md).
+  std::vector<material::MaterialPtr> tet_material = fem::tet_laws(problem);
   model.dofs = std::make_unique<fem::DofMap>(problem);
-  model.tet_owner = partition_among_ranks(mesh, model.tet_material);
+  model.tet_owner = partition_among_ranks(mesh, tet_material);
   model.elastic = std::make_unique<fem::ElasticEnergy>(
-      mesh.rest, mesh.tets, model.tet_material,
+      mesh.rest, mesh.tets, tet_material,
       fem::ElasticEnergyOptions{.project_hessians = scene.solver.newton.project_element_hessians,
                                 .evaluated_tets = own_tets(model)});
   const bool dynamic = scene.dynamics.enabled;
@@ -307,7 +306,7 @@ Model build_model(const scene::SceneConfig& scene) {
       fem::lumped_masses(mesh.rest, mesh.tets, mesh.region, problem.region_density), problem.gravity,
       dynamic ? fem::Amplitude{{{0.0, 1.0}}} : fem::Amplitude{}, problem.forces, mesh.num_nodes());
   if (dynamic)
-    model.dynamics = make_dynamics(scene.dynamics, problem, model.tet_material, *model.elastic);
+    model.dynamics = make_dynamics(scene.dynamics, problem, tet_material, *model.elastic);
   else
     model.stabilization = make_stabilization(problem, *model.dofs, scene.solver.stepping.stabilization);
   if (!scene.initial_state.empty()) start_from_run(model, scene.initial_state);

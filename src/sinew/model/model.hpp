@@ -42,7 +42,6 @@ struct Model {
   /// Owned on the heap: the energies and the DofMap refer to its arrays, so a Model can move.
   std::unique_ptr<const fem::Problem> problem;
   std::unique_ptr<fem::DofMap> dofs;
-  std::vector<material::MaterialPtr> tet_material;  ///< #T, nullptr for rigid tets
   /// On several MPI ranks: the rank that owns each tet (#T; compact parts of the mesh, docs/mpi.md
   /// "Who owns what"), which evaluates its element and contact work and writes it out; empty on
   /// one rank.
