@@ -24,9 +24,15 @@
 #include "sinew/fem/elastic_energy.hpp"
 #include "sinew/fem/quadratic_energy.hpp"
 #include "sinew/fem/rigid_body_modes.hpp"
+#include "sinew/mesh/tet_mesh_bytes.hpp"
 #include "sinew/model/model.hpp"
 #include "sinew/parallel/ranks.hpp"
+#include "sinew/scene/build_problem.hpp"
+#include "sinew/scene/element_size.hpp"
 #include "sinew/scene/load_scene.hpp"
+#include "support/files.hpp"
+#include "support/temp_dir.hpp"
+#include "surface/surface_fixtures.hpp"
 #include "sinew/solver/petsc_linear_solver.hpp"
 
 namespace sinew::app_test {
@@ -403,15 +409,52 @@ TEST(RanksUnderMpirun, EachRankDetectsThePairsOfItsTetsAndEveryRankEndsWithAllOf
   EXPECT_GT(own, 0u) << "rank " << parallel::rank();
 }
 
+TEST(RanksUnderMpirun, RankZeroMeshesEachGeneratedBodyAndTheOtherRanksReceiveItOrItsFailure) {
+  if (parallel::launched_size() <= 1) GTEST_SKIP() << "runs under mpirun (Mpi.TheRankHelpersWorkUnderMpirun)";
+  parallel::start();
+  // The other ranks are given another element size: meshing themselves, they would hold other
+  // meshes; receiving rank 0's, every rank holds its mesh to the last bit.
+  scene::SceneConfig config = scene::parse_scene(example("hertz-ball"), "");
+  scene::set_element_size(config, parallel::is_root() ? 2.0 : 3.0);
+  const fem::Problem problem = scene::build_problem(config);
+  const std::string mine = mesh::tet_mesh_bytes(problem.mesh);
+  const std::vector<char> all = parallel::gather_all(std::vector<char>(mine.begin(), mine.end()));
+  ASSERT_EQ(all.size(), mine.size() * static_cast<std::size_t>(parallel::size()));
+  for (int r = 0; r < parallel::size(); ++r)
+    EXPECT_EQ(std::string(all.begin() + static_cast<long>(r * mine.size()), all.begin() + static_cast<long>((r + 1) * mine.size())), mine)
+        << "rank " << r;
+  EXPECT_GT(problem.mesh.num_tets(), 0);
+  // Rank 0 cannot read its surface file (the other ranks could): every rank ends with rank 0's
+  // message, as an input error naming the file.
+  const sinew::testing::TempDir data;
+  if (!parallel::is_root()) sinew::testing::write_text(data.path() / "cube.stl", sinew::testing::ascii_stl(sinew::testing::unit_cube()));
+  nlohmann::json surfaces = nlohmann::json::parse(R"({
+    "units": "mm, mN, kPa",
+    "materials": {"gel": {"law": "neo-hookean", "mu": 1.0, "lambda": 10.0}},
+    "bodies": [{"name": "block",
+      "mesh": {"surfaces": {"element_size": 0.5, "surfaces": {"cube": {"file": "cube.stl"}},
+                            "parts": [{"region": "box", "solid": {"surface": "cube"}}]}},
+      "regions": {"*": {"material": "gel"}}}]
+  })");
+  surfaces["data_dir"] = data.path().string();
+  try {
+    scene::build_problem(scene::parse_scene(surfaces, data.path().string()));
+    ADD_FAILURE() << "rank " << parallel::rank() << ": meshed";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("cube.stl")) << "rank " << parallel::rank();
+    EXPECT_THAT(e.what(), HasSubstr("file not found")) << "rank " << parallel::rank();
+  }
+}
+
 TEST_F(Mpi, TheRankHelpersWorkUnderMpirun) {
   // This test program itself on 2 ranks, running only the RanksUnderMpirun tests above.
   const CommandResult result = run_program(fs::read_symlink("/proc/self/exe").string(), {"--gtest_filter=RanksUnderMpirun.*", "--gtest_color=no"}, directory,
                                            with_timeout(mpirun(2)));
   EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
-  // Each of the 2 ranks ran the seven tests and none skipped.
+  // Each of the 2 ranks ran the eight tests and none skipped.
   std::size_t passed = 0;
-  for (std::size_t at = result.out.find("[  PASSED  ] 7 tests"); at != std::string::npos;
-       at = result.out.find("[  PASSED  ] 7 tests", at + 1))
+  for (std::size_t at = result.out.find("[  PASSED  ] 8 tests"); at != std::string::npos;
+       at = result.out.find("[  PASSED  ] 8 tests", at + 1))
     ++passed;
   EXPECT_EQ(passed, 2u) << result.out;
   EXPECT_EQ(result.out.find("SKIPPED"), std::string::npos) << result.out;

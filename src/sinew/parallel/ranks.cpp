@@ -124,10 +124,9 @@ int broadcast(int value) {
 std::string broadcast(const std::string& text) {
   if (!g_started) return text;
   const int length = broadcast(static_cast<int>(text.size()));
-  std::vector<char> bytes(text.begin(), text.end());
-  bytes.resize(static_cast<std::size_t>(length));
-  if (length > 0) check(MPI_Bcast(bytes.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD), "MPI_Bcast");
-  return std::string(bytes.begin(), bytes.end());
+  std::string out = g_rank == 0 ? text : std::string(static_cast<std::size_t>(length), '\0');
+  if (length > 0) check(MPI_Bcast(out.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD), "MPI_Bcast");
+  return out;
 }
 
 std::vector<char> gather_all(const std::vector<char>& bytes) {

@@ -41,7 +41,7 @@ bool all(bool value);
 bool any(bool value);
 /// `value` of rank 0, on every rank.
 int broadcast(int value);
-/// `text` of rank 0, on every rank.
+/// `text` of rank 0, on every rank (rank 0's text under 2^31 bytes: MPI's int counts).
 std::string broadcast(const std::string& text);
 /// Every rank's `bytes` (a different length on each rank allowed), concatenated in rank order,
 /// on every rank. Throws sinew::Error on every rank when the total passes 2^31 - 1 bytes (MPI's
