@@ -24,6 +24,7 @@
 #include "sinew/io/output_directory.hpp"
 #include "sinew/model/model.hpp"
 #include "sinew/parallel/ranks.hpp"
+#include "sinew/parallel/root_for_all.hpp"
 #include "sinew/scene/element_size.hpp"
 #include "sinew/scene/load_scene.hpp"
 #include "sinew/scene/scene_schema.hpp"
@@ -288,7 +289,7 @@ int run_commands(int argc, char** argv) {
     run_options.command = command_line(argc, argv);
     // The output directory is checked before any work (nothing is written until the scene has
     // passed every check).
-    on_root_for_all([&] {
+    parallel::on_root_for_all([&] {
       io::check_output_directory(run_options.output_directory,
                                  {.overwrite = run_options.overwrite, .resume = run_options.resume});
     });

@@ -5,10 +5,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <thread>
-#include <exception>
-#include <new>
 #include <string>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -18,13 +16,6 @@
 #include "sinew/parallel/ranks.hpp"
 
 namespace sinew::app {
-
-namespace {
-
-/// The kinds of failure on_root_for_all passes from rank 0 to the others.
-enum class FailureKind : int { None = 0, Input = 1, Output = 2, Memory = 3, Other = 4 };
-
-}  // namespace
 
 void start_ranks() {
   parallel::start();
@@ -54,41 +45,6 @@ int threads_per_rank() {
   if (ranks_here <= 0) ranks_here = parallel::size();  // unknown: as if all were on this node
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   return std::max(1, cores / ranks_here);
-}
-
-void on_root_for_all(const std::function<void()>& step) {
-  if (parallel::size() <= 1) {
-    step();
-    return;
-  }
-  FailureKind kind = FailureKind::None;
-  std::string message;
-  std::exception_ptr failure;
-  if (parallel::is_root()) {
-    try {
-      step();
-    } catch (const InputError& e) {
-      kind = FailureKind::Input, message = e.what(), failure = std::current_exception();
-    } catch (const OutputError& e) {
-      kind = FailureKind::Output, message = e.what(), failure = std::current_exception();
-    } catch (const OutOfMemoryError& e) {
-      kind = FailureKind::Memory, message = e.what(), failure = std::current_exception();
-    } catch (const std::bad_alloc&) {
-      kind = FailureKind::Memory, message = "out of memory", failure = std::current_exception();
-    } catch (const std::exception& e) {
-      kind = FailureKind::Other, message = e.what(), failure = std::current_exception();
-    }
-  }
-  kind = static_cast<FailureKind>(parallel::broadcast(static_cast<int>(kind)));
-  if (kind == FailureKind::None) return;
-  message = parallel::broadcast(message);
-  if (failure) std::rethrow_exception(failure);
-  switch (kind) {
-    case FailureKind::Input: throw InputError(message);
-    case FailureKind::Output: throw OutputError(message);
-    case FailureKind::Memory: throw OutOfMemoryError(message);
-    default: throw Error(message);
-  }
 }
 
 void check_ranks_agree(const fem::State& state, double t, int step) {

@@ -5,7 +5,6 @@
 /// run silently. A failure that only one rank can see is made every rank's, so no rank waits
 /// for another that has stopped.
 
-#include <functional>
 #include <string>
 
 #include "sinew/fem/state.hpp"
@@ -21,11 +20,6 @@ void start_ranks();
 /// Worker threads for each rank when the command line does not say: on several ranks the
 /// node's cores shared among the ranks on it (at least 1), else 0 (all cores).
 int threads_per_rank();
-
-/// Runs `step` on rank 0 only. When it throws, every rank throws: rank 0 its own exception, the
-/// others one of the same kind (InputError, OutputError, OutOfMemoryError or Error) with the same
-/// message. On one rank: just runs `step`.
-void on_root_for_all(const std::function<void()>& step);
 
 /// Ends the run after a failure: on several ranks, when the failure may be this rank's alone
 /// (`every_rank_saw_it` false), it ends every rank with `exit_code` (MPI_Abort); otherwise, and

@@ -19,6 +19,7 @@
 #include "sinew/io/progress.hpp"
 #include "sinew/model/solve_model.hpp"
 #include "sinew/parallel/ranks.hpp"
+#include "sinew/parallel/root_for_all.hpp"
 
 namespace sinew::app {
 
@@ -225,7 +226,7 @@ RunReport run_model(model::Model& model, const scene::OutputConfig& output_confi
     logger().info("starting from the end of the run in {}{}", model.started_from,
                   model.start_velocity.rows() > 0 ? " (its positions and velocities)" : " (its positions)");
   std::optional<io::OutputDirectoryLock> lock;  // rank 0's; the other ranks write nothing
-  on_root_for_all([&] {
+  parallel::on_root_for_all([&] {
     lock.emplace(options.output_directory, io::OutputDirectoryOptions{.overwrite = options.overwrite,
                                                                       .resume = resume_from != nullptr},
                  options.command);

@@ -27,6 +27,7 @@
 #include "sinew/mesh/tet_mesh_bytes.hpp"
 #include "sinew/model/model.hpp"
 #include "sinew/parallel/ranks.hpp"
+#include "sinew/parallel/root_for_all.hpp"
 #include "sinew/scene/build_problem.hpp"
 #include "sinew/scene/element_size.hpp"
 #include "sinew/scene/load_scene.hpp"
@@ -232,15 +233,15 @@ TEST(RanksUnderMpirun, AFailureOnRankZeroIsThrownOnEveryRankWithItsKindAndMessag
   if (parallel::launched_size() <= 1) GTEST_SKIP() << "runs under mpirun (Mpi.TheRankHelpersWorkUnderMpirun)";
   parallel::start();
   bool ran = false;
-  EXPECT_NO_THROW(app::on_root_for_all([&] { ran = true; }));
+  EXPECT_NO_THROW(parallel::on_root_for_all([&] { ran = true; }));
   EXPECT_EQ(ran, parallel::is_root());  // the step runs on rank 0 alone
   try {
-    app::on_root_for_all([] { throw OutputError("cannot write file 'x': disk full"); });
+    parallel::on_root_for_all([] { throw OutputError("cannot write file 'x': disk full"); });
     ADD_FAILURE() << "rank " << parallel::rank() << ": no exception";
   } catch (const OutputError& error) {  // the same kind on every rank, not just Error
     EXPECT_STREQ(error.what(), "cannot write file 'x': disk full");
   }
-  EXPECT_THROW(app::on_root_for_all([] { throw InputError("bad scene"); }), InputError);
+  EXPECT_THROW(parallel::on_root_for_all([] { throw InputError("bad scene"); }), InputError);
 }
 
 TEST(RanksUnderMpirun, EachRankHoldsOnlyItsPartOfTheHessianAndThePartsAddUpToTheWhole) {

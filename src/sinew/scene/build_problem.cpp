@@ -5,10 +5,8 @@
 
 #include <algorithm>
 #include <array>
-#include <exception>
 #include <limits>
 #include <map>
-#include <new>
 #include <numeric>
 #include <optional>
 #include <set>
@@ -20,6 +18,7 @@
 #include "sinew/mesh/read_msh.hpp"
 #include "sinew/mesh/tet_mesh_bytes.hpp"
 #include "sinew/parallel/ranks.hpp"
+#include "sinew/parallel/root_for_all.hpp"
 #include "sinew/scene/build_surface_mesh.hpp"
 #include "sinew/scene/mesh_cache.hpp"
 #include "sinew/scene/resource_estimate.hpp"
@@ -162,42 +161,21 @@ class ProblemBuilder {
   /// The body's mesh made from shapes or surfaces. On several MPI ranks rank 0 makes it and
   /// sends it to the others (docs/mpi.md), which then run no mesher: they hold the same mesh to
   /// the last bit without its time and memory. A failure on rank 0 is thrown on every rank with
-  /// its message (an InputError or OutOfMemoryError where rank 0 had one, else an Error).
+  /// its message and kind (parallel::on_root_for_all).
   mesh::TetMesh generated_mesh(const BodyConfig& config) const {
     if (parallel::size() <= 1) return generated_mesh_here(config);
-    enum Outcome : int { kMeshed = 0, kInputError = 1, kOutOfMemory = 2, kOtherError = 3 };
-    int outcome = kMeshed;
-    std::string bytes;  // the mesh on rank 0, else the failure's message
-    std::exception_ptr failure;
     mesh::TetMesh made;
-    if (parallel::is_root()) {
-      try {
-        made = generated_mesh_here(config);
-        bytes = mesh::tet_mesh_bytes(made);
-        if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-          outcome = kOtherError;
-          bytes = fmt::format("the mesh of body \"{}\" takes {} bytes, more than MPI sends to the other ranks at once "
-                              "(2^31 - 1): give the body a .msh file instead (\"mesh\": {{\"file\": ...}}), which every "
-                              "rank reads",
-                              config.name, bytes.size());
-          failure = std::make_exception_ptr(Error(bytes));
-        }
-      } catch (const InputError& e) {
-        outcome = kInputError, bytes = e.what(), failure = std::current_exception();
-      } catch (const OutOfMemoryError& e) {
-        outcome = kOutOfMemory, bytes = e.what(), failure = std::current_exception();
-      } catch (const std::bad_alloc&) {
-        outcome = kOutOfMemory, bytes = "out of memory while meshing", failure = std::current_exception();
-      } catch (const std::exception& e) {
-        outcome = kOtherError, bytes = e.what(), failure = std::current_exception();
-      }
-    }
-    outcome = parallel::broadcast(outcome);
+    std::string bytes;
+    parallel::on_root_for_all([&] {
+      made = generated_mesh_here(config);
+      bytes = mesh::tet_mesh_bytes(made);
+      if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        throw Error(fmt::format("the mesh of body \"{}\" takes {} bytes, more than MPI sends to the other ranks at "
+                                "once (2^31 - 1): give the body a .msh file instead (\"mesh\": {{\"file\": ...}}), "
+                                "which every rank reads",
+                                config.name, bytes.size()));
+    });
     bytes = parallel::broadcast(bytes);
-    if (failure) std::rethrow_exception(failure);
-    if (outcome == kInputError) throw InputError(bytes);
-    if (outcome == kOutOfMemory) throw OutOfMemoryError(bytes);
-    if (outcome == kOtherError) throw Error(bytes);
     if (parallel::is_root()) return made;
     return mesh::tet_mesh_from_bytes(bytes);
   }
