@@ -11,9 +11,11 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/CholmodSupport>
 #include <SuiteSparse_config.h>
 
 #include "sinew/core/error.hpp"
+#include "sinew/solver/serial_openmp.hpp"
 
 namespace sinew::solver {
 namespace {
@@ -62,6 +64,50 @@ INSTANTIATE_TEST_SUITE_P(AllKinds, LinearSolvers,
                          ::testing::Values(LinearSolverOptions::Kind::Cholmod, LinearSolverOptions::Kind::Gmres,
                                            LinearSolverOptions::Kind::ConjugateGradient,
                                            LinearSolverOptions::Kind::PetscGamg, LinearSolverOptions::Kind::PetscMumps));
+
+// CHOLMOD factorizes K's lower triangle: K is handed over upper-stored with its lower triangle
+// mirrored (one transpose fewer inside CHOLMOD), and the answer is the lower-stored CHOLMOD's to
+// the last bit, however much the upper triangle differs.
+TEST(CholmodSolver, SolvesWithTheLowerTriangleToTheBitsOfALowerStoredFactorization) {
+  const int n = 400;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < n; ++i) {
+    entries.emplace_back(i, i, 8.0 + 0.01 * i);
+    for (const int offset : {1, 7, 53}) {
+      if (i + offset >= n) continue;
+      const double lower = -1.0 - 1e-3 * ((i * offset) % 17);
+      entries.emplace_back(i + offset, i, lower);
+      entries.emplace_back(i, i + offset, lower * (1 + 1e-3));  // the upper twin differs
+    }
+  }
+  fem::SparseMatrix K(n, n);
+  K.setFromTriplets(entries.begin(), entries.end());
+  const VectorX b = VectorX::LinSpaced(n, -1.0, 3.0);
+
+  Eigen::CholmodSupernodalLLT<fem::SparseMatrix, Eigen::Lower> lower_stored;
+  VectorX expected;
+  {
+    const SerialOpenMpScope one_thread;  // as the solver runs CHOLMOD
+    lower_stored.compute(K);
+    ASSERT_EQ(lower_stored.info(), Eigen::Success);
+    expected = lower_stored.solve(b);
+  }
+  auto solver = make_linear_solver({});
+  solver->analyze(K);
+  ASSERT_TRUE(solver->factorize(K));
+  VectorX x;
+  ASSERT_TRUE(solver->solve(b, x).success);
+  for (int i = 0; i < n; ++i) ASSERT_EQ(x[i], expected[i]) << "entry " << i;
+  // The upper triangle's values would have given another answer.
+  const fem::SparseMatrix upper_symmetric = fem::SparseMatrix(K.triangularView<Eigen::Upper>()).selfadjointView<Eigen::Upper>();
+  Eigen::CholmodSupernodalLLT<fem::SparseMatrix, Eigen::Upper> upper_stored(upper_symmetric);
+  EXPECT_GT((upper_stored.solve(b) - expected).norm(), 1e-6 * expected.norm());
+  // A second matrix of the same pattern reuses the map: again the lower-stored answer.
+  const fem::SparseMatrix doubled = 2.0 * K;
+  ASSERT_TRUE(solver->factorize(doubled));
+  ASSERT_TRUE(solver->solve(b, x).success);
+  EXPECT_LT((x - 0.5 * expected).norm(), 1e-13 * expected.norm());
+}
 
 // CHOLMOD's allocations go through SuiteSparse_config; one that fails during the numeric
 // factorization must be reported as memory, not as an indefinite matrix (which Newton would

@@ -12,6 +12,7 @@
 #include "sinew/core/error.hpp"
 #include "sinew/solver/petsc_linear_solver.hpp"
 #include "sinew/solver/serial_openmp.hpp"
+#include "sinew/solver/triangle_mirror.hpp"
 
 namespace sinew::solver {
 namespace {
@@ -21,7 +22,9 @@ double relative_residual(const SparseMatrix& K, const VectorX& x, const VectorX&
   return nb > 0 ? (K * x - b).norm() / nb : (K * x).norm();
 }
 
-/// CHOLMOD's supernodal LL^T, its OpenMP regions on the calling thread (serial_openmp.hpp).
+/// CHOLMOD's supernodal LL^T, its OpenMP regions on the calling thread (serial_openmp.hpp), of
+/// K's lower triangle: it is mirrored onto the upper one and K handed over as upper-stored, which
+/// CHOLMOD permutes with one transpose instead of two (triangle_mirror.hpp).
 /// With options.lagged_iterations > 0, a new matrix is not factorized at once: CG preconditioned
 /// by the last good factorization solves with it, and only when CG does not reach
 /// options.lagged_tolerance within that many iterations (or meets negative curvature) is the
@@ -69,6 +72,7 @@ class CholmodSolver final : public LinearSolver {
 
  private:
   void analyze_now(const SparseMatrix& K) {
+    mirror_stale_ = true;
     const SerialOpenMpScope one_thread;
     llt_.analyzePattern(K);
     check_memory("analyze", K);
@@ -78,6 +82,10 @@ class CholmodSolver final : public LinearSolver {
   bool factorize_now() {
     lagged_ = false;
     if (pattern_pending_) analyze_now(K_);
+    K_.makeCompressed();
+    if (mirror_stale_ || !fits(mirror_, K_)) mirror_ = triangle_mirror(K_);  // !fits: analyze() skipped
+    mirror_stale_ = false;
+    mirror_lower_to_upper(mirror_, K_);
     const SerialOpenMpScope one_thread;
     llt_.factorize(K_);
     check_memory("factorize", K_);
@@ -142,8 +150,10 @@ class CholmodSolver final : public LinearSolver {
     }
   }
 
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt_;
-  SparseMatrix K_;  ///< the matrix last given to factorize
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> llt_;
+  SparseMatrix K_;  ///< the matrix last given to factorize (its lower triangle mirrored once factorized)
+  TriangleMirror mirror_;      ///< the twins of the analyzed pattern's entries
+  bool mirror_stale_ = true;   ///< a new pattern was analyzed since mirror_ was built
   int lagged_iterations_ = 0;
   double lagged_tolerance_ = 1e-3;
   double required_ = 1;  ///< the caller's bound on the relative residual (require_relative_residual)
