@@ -109,6 +109,29 @@ TEST(CholmodSolver, SolvesWithTheLowerTriangleToTheBitsOfALowerStoredFactorizati
   EXPECT_LT((x - 0.5 * expected).norm(), 1e-13 * expected.norm());
 }
 
+// A factorization that fails stops at the failing supernode without leaving a partial factor:
+// the next matrix of the same pattern is factorized and solved as if the failure had not been.
+TEST(CholmodSolver, AFailedFactorizationLeavesNothingBehindForTheNext) {
+  const int n = 500;
+  const fem::SparseMatrix spd = laplacian(n, 0.25);
+  const fem::SparseMatrix indefinite = laplacian(n, -0.5);  // eigenvalues down to -0.5
+  const VectorX expected = VectorX::LinSpaced(n, 1.0, -2.0);
+  auto fresh = make_linear_solver({});
+  fresh->analyze(spd);
+  ASSERT_TRUE(fresh->factorize(spd));
+  VectorX reference;
+  ASSERT_TRUE(fresh->solve(spd * expected, reference).success);
+  auto solver = make_linear_solver({});
+  solver->analyze(spd);
+  for (int round = 0; round < 3; ++round) {
+    EXPECT_FALSE(solver->factorize(indefinite));
+    ASSERT_TRUE(solver->factorize(spd));
+    VectorX x;
+    ASSERT_TRUE(solver->solve(spd * expected, x).success);
+    for (int i = 0; i < n; ++i) ASSERT_EQ(x[i], reference[i]) << "round " << round << ", entry " << i;
+  }
+}
+
 // CHOLMOD's allocations go through SuiteSparse_config; one that fails during the numeric
 // factorization must be reported as memory, not as an indefinite matrix (which Newton would
 // answer by shifting and halving the step until the run is killed).

@@ -35,6 +35,10 @@ class CholmodSolver final : public LinearSolver {
       : lagged_iterations_(options.lagged_iterations), lagged_tolerance_(options.lagged_tolerance) {
     // An indefinite matrix is an expected event (the caller regularizes); keep CHOLMOD quiet.
     llt_.cholmod().print = 0;
+    // And stop at the failing supernode: by default CHOLMOD assembles and factorizes that
+    // supernode a second time, up to the failing column, to leave a valid partial factor, which
+    // the caller never uses (docs/solver.md, "A failed factorization stops at once").
+    llt_.cholmod().quick_return_if_not_posdef = 1;
   }
   void analyze(const SparseMatrix& K) override {
     if (lagged_iterations_ > 0 && factor_valid_) {
