@@ -28,6 +28,9 @@ TriangleMirror triangle_mirror(const SparseMatrix& pattern) {
   // are met in that same order when the columns r are walked in increasing order. So a cursor
   // per column c finds each twin without a search.
   std::vector<int> cursor(start, start + n);
+  // A symmetric pattern has at most (nonzeros - diagonal) / 2 entries above its diagonal.
+  mirror.upper.reserve(static_cast<std::size_t>(mirror.stored) / 2);
+  mirror.lower.reserve(static_cast<std::size_t>(mirror.stored) / 2);
   for (int r = 0; r < n; ++r) {
     for (int k = start[r]; k < start[r + 1]; ++k) {
       const int c = row[k];
