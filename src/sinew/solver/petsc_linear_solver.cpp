@@ -96,7 +96,12 @@ class PetscSolver final : public LinearSolver {
     check(MatSetOption(A_.get(), MAT_SYMMETRY_ETERNAL, PETSC_TRUE), "MatSetOption(MAT_SYMMETRY_ETERNAL)");
     check(MatSetOption(A_.get(), MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE), "MatSetOption");
     starts_ = std::move(starts);
-    columns_ = std::move(columns);
+    // On several ranks the renumbered rows (row_columns_, value_source_) hold the pattern already:
+    // a copy of K's row indices would be another 4 bytes per nonzero of this rank's part.
+    if (distributed())
+      std::vector<PetscInt>().swap(columns_);
+    else
+      columns_ = std::move(columns);
     check(KSPCreate(communicator(), &*ksp_), "KSPCreate");
     PC pc = nullptr;
     check(KSPGetPC(ksp_.get(), &pc), "KSPGetPC");
@@ -237,11 +242,30 @@ class PetscSolver final : public LinearSolver {
   }
 
  private:
+  /// True when K has the pattern analyze() was given last: its column starts, and its row indices
+  /// (kept as they are on one process; on several ranks read back through the renumbering, where
+  /// entry j of PETSc's row i is K's value_source_[j], in K's column old_of_new[i] and at row
+  /// old_of_new[row_columns_[j]]).
   bool same_pattern(const SparseMatrix& K) const {
-    return starts_.size() == static_cast<std::size_t>(K.outerSize() + 1) &&
-           columns_.size() == static_cast<std::size_t>(K.nonZeros()) &&
-           std::equal(starts_.begin(), starts_.end(), K.outerIndexPtr()) &&
-           std::equal(columns_.begin(), columns_.end(), K.innerIndexPtr());
+    const auto nonzeros = static_cast<std::size_t>(K.nonZeros());
+    if (starts_.size() != static_cast<std::size_t>(K.outerSize() + 1) ||
+        !std::equal(starts_.begin(), starts_.end(), K.outerIndexPtr()))
+      return false;
+    if (!distributed())
+      return columns_.size() == nonzeros && std::equal(columns_.begin(), columns_.end(), K.innerIndexPtr());
+    if (value_source_.size() != nonzeros || row_starts_.size() != static_cast<std::size_t>(rows_) + 1) return false;
+    const int* rows_of_K = K.innerIndexPtr();
+    for (PetscInt i = 0; i < rows_; ++i) {
+      const Index column = order_.old_of_new[static_cast<std::size_t>(i)];
+      const PetscInt first = starts_[static_cast<std::size_t>(column)], last = starts_[static_cast<std::size_t>(column) + 1];
+      if (row_starts_[static_cast<std::size_t>(i) + 1] - row_starts_[static_cast<std::size_t>(i)] != last - first) return false;
+      for (PetscInt j = row_starts_[static_cast<std::size_t>(i)]; j < row_starts_[static_cast<std::size_t>(i) + 1]; ++j) {
+        const PetscInt k = value_source_[static_cast<std::size_t>(j)];
+        if (rows_of_K[k] != order_.old_of_new[static_cast<std::size_t>(row_columns_[static_cast<std::size_t>(j)])])
+          return false;
+      }
+    }
+    return true;
   }
 
   /// |A x - b| / |b| with PETSc's matrix (the one factorized; the caller's K may be gone), from
@@ -376,7 +400,7 @@ class PetscSolver final : public LinearSolver {
   PetscInt first_row_ = 0;         ///< this rank's rows of PETSc's matrix: [first_row_, first_row_ + local_rows_)
   PetscInt local_rows_ = 0;
   std::vector<PetscInt> starts_;   ///< the analyzed pattern's column starts
-  std::vector<PetscInt> columns_;  ///< and row indices (compressed columns of the symmetric K)
+  std::vector<PetscInt> columns_;  ///< and row indices (compressed columns of the symmetric K); on one process only
   std::vector<int> owner_;         ///< the rank of each unknown (set_row_owners), or empty
   RowOrder order_;                 ///< on several ranks: PETSc's rows as K's unknowns, rank by rank
   std::vector<PetscInt> row_starts_;    ///< on several ranks: K renumbered (all rows, PETSc's numbers),
