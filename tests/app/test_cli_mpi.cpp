@@ -337,11 +337,12 @@ TEST(RanksUnderMpirun, EachRankHoldsTheElasticTermOfItsOwnTetsOnlyAndTheirSumIsT
   EXPECT_LE(difference, 1e-12 * largest);
 }
 
-// The distributed PETSc solve analyzes again exactly when a rank's part of K has another pattern.
-// On several ranks it keeps no copy of K's row indices and reads the pattern back through its
-// renumbered rows, so a pattern with the same column starts and nonzeros but other rows (two
-// couplings swapped between two pairs of unknowns) must still count as new: taken as the old one,
-// its values would be added at the old places and the solution would be wrong.
+// The distributed PETSc solve analyzes again when a rank's part of K has another pattern, and
+// solves a new K on the pattern it has. On several ranks it keeps no copy of K's row indices and
+// reads the pattern back through its renumbered rows, so a pattern with the same column starts
+// and nonzeros but other rows (two couplings swapped between two pairs of unknowns) must still
+// count as new: taken as the old one, its values would be added at the old places and the
+// solution would be wrong.
 TEST(RanksUnderMpirun, APetscSolveOnRanksAnalyzesAgainWhenThePatternOfItsPartChanges) {
   if (parallel::launched_size() <= 1) GTEST_SKIP() << "runs under mpirun (Mpi.TheRankHelpersWorkUnderMpirun)";
   parallel::start();
